@@ -1,0 +1,57 @@
+// Global residual and Jacobian from the element kernels (Albany's gather/scatter without
+// Phalanx). The only place where derivatives are seeded and read:
+//   Residual — double
+//   Jacobian — Sacado::Fad::SFad<double, N>, N = the cell's dof count (9 for P1, 12 for Q1)
+// Cells are this rank's partition; contributions to shared rows are summed by the
+// FECrsMatrix / an overlap vector exported with ADD.
+#pragma once
+
+#include <Teuchos_RCP.hpp>
+
+#include "flowform/BoundaryConditions.hpp"
+#include "flowform/DofMap.hpp"
+#include "flowform/Material.hpp"
+#include "flowform/Mesh.hpp"
+#include "flowform/TpetraTypes.hpp"
+#include "flowform/kernels/FlowResidual.hpp"
+
+namespace flowform {
+
+/// What the bulk physics is: geometry, stabilization, body force and the material law.
+struct FlowPhysics {
+  FlowKernelSettings kernel;
+  MaterialParameters<double> material{0.0, 1.0, 1.0, 1e-3};
+};
+
+class Assembler {
+ public:
+  Assembler(const Mesh& mesh, const DofMap& dofMap, const BoundaryConditions& bcs);
+
+  /// The physics may change between solves (continuation in n and e0).
+  void setPhysics(const FlowPhysics& physics) { m_physics = physics; }
+  const FlowPhysics& physics() const { return m_physics; }
+
+  /// F(x) on the owned map.
+  void residual(const Vector& xOwned, Vector& fOwned) const;
+  /// J = dF/dx at x into `jacobian` (built on dofMap.graph()); F(x) too when `fOwned` is given.
+  void jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fOwned = nullptr) const;
+
+  /// A Jacobian matrix on this problem's graph, values unset.
+  Teuchos::RCP<FECrsMatrix> createJacobian() const;
+
+ private:
+  template <int NumNodes>
+  void assembleJacobianCells(const Vector& xOverlap, FECrsMatrix& jacobian, Vector* fOverlap) const;
+  void addConstraintRows(const Vector& xOverlap, FECrsMatrix* jacobian, Vector* fOverlap) const;
+  void addTractions(Vector& fOverlap) const;
+  const Vector& importSolution(const Vector& xOwned) const;
+
+  const Mesh& m_mesh;
+  const DofMap& m_dofMap;
+  const BoundaryConditions& m_bcs;
+  FlowPhysics m_physics;
+  Teuchos::RCP<Vector> m_xOverlap;  ///< scratch: x imported to the overlap map
+  Teuchos::RCP<Vector> m_fOverlap;  ///< scratch: residual before the export to owned rows
+};
+
+}  // namespace flowform

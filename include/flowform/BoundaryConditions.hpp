@@ -1,0 +1,84 @@
+// Boundary conditions by gmsh physical-group name (SPEC §2, first bullet):
+//   Velocity   — one or both components prescribed ("Velocity X", "Velocity Y")
+//   Symmetry   — zero normal velocity on a straight boundary of any orientation
+//   Traction   — a given traction vector t̄ ("Traction X", "Traction Y"; default 0 = free)
+// A traction given on a Velocity or Symmetry group loads its free component (a mixed
+// condition, e.g. u_y = 0 with a normal traction at a channel inlet).
+// Groups the case does not name are traction-free.
+//
+// Velocity and symmetry conditions are linear constraints a·u_i = b on the velocity of a
+// node i. At a node with one constraint, the momentum row of the component where |a_c| is
+// largest is replaced by the constraint, and the other row by the tangential momentum
+// equation t·R_i (t ⊥ a): the constraint acts in the node's own frame, so an inclined
+// symmetry line needs no change of unknowns. Two independent constraints fix both
+// components. The element-level part (zeroing and rotating rows) is applyConstraintRows();
+// the owner of the node adds the constraint rows once (Assembler).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "flowform/DofMap.hpp"
+#include "flowform/Mesh.hpp"
+#include "flowform/Types.hpp"
+
+namespace flowform {
+
+struct NodeConstraint {
+  enum class Kind { None, Single, Full };
+  Kind kind = Kind::None;
+  double a[2] = {0.0, 0.0};      ///< Single: unit constraint direction
+  double b = 0.0;                ///< Single: a·u = b
+  int constrainedRow = kUx;      ///< Single: row (component) replaced by the constraint
+  double t[2] = {0.0, 0.0};      ///< Single: tangent whose momentum equation stays
+  double value[2] = {0.0, 0.0};  ///< Full: the prescribed velocity
+};
+
+/// A boundary edge carrying a prescribed traction, assembled by the rank whose cell has it.
+struct TractionEdge {
+  LO nodes[2];  ///< overlap-local node indices
+  double traction[2];
+};
+
+/// Element-level part of the constraints: in the node's two momentum rows R = (R_x, R_y),
+/// Single → R_c := 0, R_o := t·R; Full → both := 0. Linear, so it commutes with assembly.
+template <typename Scalar>
+void applyConstraintRows(const NodeConstraint& nc, Scalar* nodeResidual) {
+  if (nc.kind == NodeConstraint::Kind::None) return;
+  if (nc.kind == NodeConstraint::Kind::Full) {
+    nodeResidual[kUx] = 0.0;
+    nodeResidual[kUy] = 0.0;
+    return;
+  }
+  const Scalar tangential = nc.t[0] * nodeResidual[kUx] + nc.t[1] * nodeResidual[kUy];
+  nodeResidual[nc.constrainedRow] = 0.0;
+  nodeResidual[1 - nc.constrainedRow] = tangential;
+}
+
+class BoundaryConditions {
+ public:
+  /// The valid entries of one group's sublist (Type, Velocity X/Y, Traction X/Y).
+  static Teuchos::RCP<const Teuchos::ParameterList> validGroupParameters();
+
+  /// `bcList` is the "Boundary Conditions" sublist: one sublist per group name. Throws
+  /// InputError for an unknown group (naming the groups the mesh has), an unknown type,
+  /// a velocity group with no component, a curved symmetry group, or conflicting
+  /// constraints at a node (naming both groups).
+  BoundaryConditions(const Teuchos::ParameterList& bcList, const Mesh& mesh, const DofMap& dofMap);
+
+  /// Constraint of every overlap node.
+  const std::vector<NodeConstraint>& constraints() const { return m_constraints; }
+  const std::vector<TractionEdge>& tractionEdges() const { return m_tractionEdges; }
+
+  /// Sets the constrained components of an owned solution vector so that a·u = b holds
+  /// (the initial guess then satisfies every constraint, and Newton keeps it so).
+  void imposeOnSolution(Vector& xOwned) const;
+
+ private:
+  std::vector<NodeConstraint> m_constraints;
+  std::vector<TractionEdge> m_tractionEdges;
+};
+
+}  // namespace flowform

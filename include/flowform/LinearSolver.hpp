@@ -1,0 +1,43 @@
+// Direct solution of the Newton (and sensitivity) systems with Amesos2 KLU2.
+//
+// One process: KLU2 on the assembled matrix; the symbolic factorization (ordering) is done
+// once, since the sparsity never changes, and each new Jacobian costs one numeric
+// factorization. The factors stay until the next factor() call, so further right-hand
+// sides (the sensitivity solves) cost one back-substitution each.
+//
+// Several processes: Debian's Amesos2 KLU2 gives wrong answers on a distributed matrix
+// (TOOLCHAIN.md), so the matrix is gathered to rank 0 and factored there by a serial
+// KLU2; right-hand sides and solutions travel with the same Import. This keeps results
+// identical to the serial run; it does not scale the factorization (docs/BENCHMARKS.md).
+#pragma once
+
+#include <memory>
+
+#include <Teuchos_RCP.hpp>
+
+#include "flowform/TpetraTypes.hpp"
+
+namespace flowform {
+
+class LinearSolver {
+ public:
+  LinearSolver();
+  ~LinearSolver();
+
+  /// Factors A (numeric; symbolic too on the first call). Throws std::runtime_error when
+  /// the matrix is singular (the message says so, for the caller to report).
+  void factor(const Teuchos::RCP<const CrsMatrix>& A);
+  /// x = A⁻¹ b with the current factors.
+  void solve(const MultiVector& b, MultiVector& x);
+
+  int numFactorizations() const { return m_numFactorizations; }
+  int numSolves() const { return m_numSolves; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+  int m_numFactorizations = 0;
+  int m_numSolves = 0;
+};
+
+}  // namespace flowform

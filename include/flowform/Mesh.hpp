@@ -1,0 +1,54 @@
+// The mesh as flowform uses it: nodes, cells of one type, and named boundary and region
+// groups (gmsh physical groups). Replicated on every rank: a 2-D mesh of 10^6 dofs is a
+// few tens of MB, and replication keeps partitioning and output simple. Which cells a
+// rank assembles is decided by the partition (Partition.hpp), not here.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "flowform/Types.hpp"
+
+namespace flowform {
+
+enum class CellType { Triangle3, Quadrilateral4 };
+
+inline int nodesPerCell(CellType type) { return type == CellType::Triangle3 ? 3 : 4; }
+inline const char* cellTypeName(CellType type) {
+  return type == CellType::Triangle3 ? "Triangle" : "Quadrilateral";
+}
+
+/// The edges of one gmsh physical group of dimension 1, as node-id pairs.
+struct BoundaryGroup {
+  std::string name;
+  std::vector<std::array<GO, 2>> edges;
+};
+
+/// A physical group of dimension 2: the cells it holds.
+struct RegionGroup {
+  std::string name;
+  std::vector<GO> cells;
+};
+
+struct Mesh {
+  std::string source;                      ///< file it came from, for messages
+  CellType cellType = CellType::Triangle3;
+  std::vector<std::array<double, 2>> coords;  ///< node id (0-based, contiguous) -> (x, y)
+  /// nodesPerCell(cellType) node ids per cell, counter-clockwise (positive area).
+  std::vector<GO> cellNodes;
+  std::vector<BoundaryGroup> boundaries;
+  std::vector<RegionGroup> regions;
+
+  GO numNodes() const { return static_cast<GO>(coords.size()); }
+  GO numCells() const { return static_cast<GO>(cellNodes.size()) / nodesPerCell(cellType); }
+  const GO* cell(GO c) const { return cellNodes.data() + c * nodesPerCell(cellType); }
+
+  /// The boundary group of that name; InputError naming the mesh and the groups it has otherwise.
+  const BoundaryGroup& boundary(const std::string& name) const;
+  bool hasBoundary(const std::string& name) const;
+  /// Comma-separated names of all boundary groups, for error messages.
+  std::string boundaryNames() const;
+};
+
+}  // namespace flowform

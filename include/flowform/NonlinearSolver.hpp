@@ -1,0 +1,66 @@
+// Newton's method (NOX, line search) on the flow problem, with continuation in the rate
+// exponent n and the strain-rate cutoff e0.
+//
+// Linear problem (n = 1, σ0 = 0): one assembly, one factorization, one solve — no Newton.
+//
+// Otherwise: a Newtonian predictor (one linear solve with μ = 1/(3γ)), then continuation
+// stages along λ ∈ (0, 1] with geometric interpolation of both parameters,
+//     n(λ)  = n_s^(1−λ) n^λ,       e0(λ) = e0_s^(1−λ) e0^λ,
+// from the start values (n_s, e0_s) ("Start Exponent", "Start Cutoff") to the target.
+// The step in λ starts at "Initial Step", is halved when a stage fails (from the last
+// converged state) and grows by "Growth Factor" after a stage that took few iterations.
+// If the target needs no continuation (n ≤ n_s and e0 ≥ e0_s) there is one stage, λ = 1.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "flowform/FlowModel.hpp"
+#include "flowform/Material.hpp"
+
+namespace flowform {
+
+struct StageReport {
+  double rateExponent;
+  double cutoff;
+  int newtonIterations;
+  bool converged;
+  double residualNorm;
+};
+
+struct SolveReport {
+  bool converged = false;
+  bool linear = false;         ///< solved as a linear problem (one solve)
+  int newtonIterations = 0;    ///< over all stages, failed ones included
+  int continuationStages = 0;  ///< converged stages
+  double residualNorm = 0.0;   ///< ||F|| at the returned x
+  std::vector<StageReport> stages;
+  std::string message;         ///< why it did not converge, when it did not
+};
+
+class NonlinearSolver {
+ public:
+  /// The "Solver" sublist: Newton, line search and continuation settings.
+  static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
+
+  /// `params` is the validated "Solver" sublist.
+  NonlinearSolver(FlowModel& model, const Teuchos::ParameterList& params);
+
+  /// Solves F(x; target material) = 0 starting from x (which must satisfy the velocity
+  /// constraints). On return x is the last converged state (the target's if converged).
+  /// The model's physics is left at the target.
+  SolveReport solve(Vector& x, const FlowPhysics& target);
+
+ private:
+  /// One Newton solve at the model's current physics; returns iterations, sets converged.
+  StageReport newton(Vector& x, const FlowPhysics& physics);
+  /// x += −J⁻¹ F(x): exact for a linear problem.
+  double linearSolve(Vector& x, const FlowPhysics& physics);
+
+  FlowModel& m_model;
+  Teuchos::ParameterList m_params;
+};
+
+}  // namespace flowform

@@ -1,0 +1,106 @@
+// The element residual of the stabilized rigid-viscoplastic flow (SPEC §1), templated on
+// the scalar type of the dofs (Scalar) and of the material parameters (PScalar). It never
+// seeds or reads derivatives: the assembler does (Residual, Jacobian, ParamDeriv).
+//
+// For a cell K with shape functions N_a, velocity u, pressure p, body force f:
+//
+//   R_u[a] = ∫_K ( s : D(N_a e_i) − p div(N_a e_i) − N_a f_i ) dΩ,     s = 2 μ(e_r) D(u)
+//   R_p[a] = ∫_K ( − N_a div u − τ_K grad N_a · (grad p − f) ) dΩ
+//   τ_K    = β h_K² / (2 μ_K),  μ_K = μ at the cell centroid (current solution)
+//
+// Plane strain: dΩ = dx dy (per unit depth), D_zz = 0. Axisymmetric (x = r, y = z):
+// D_θθ = u_r / r, div u = ∂u_r/∂r + u_r/r + ∂u_z/∂z, dΩ = 2π r dr dz.
+// The −τ term is the Hughes–Franca–Balestra pressure stabilization with μ_K from the
+// current solution (its dependence on u is part of the exact tangent).
+#pragma once
+
+#include <cmath>
+
+#include "flowform/Material.hpp"
+#include "flowform/Types.hpp"
+#include "flowform/kernels/ShapeFunctions.hpp"
+
+namespace flowform {
+
+/// What the flow kernel needs besides geometry, dofs and the material.
+struct FlowKernelSettings {
+  Geometry geometry = Geometry::PlaneStrain;
+  double beta = 0.0;                 ///< stabilization factor β
+  double bodyForce[2] = {0.0, 0.0};  ///< f, force per unit volume
+};
+
+/// Strain rate at quadrature point q: D_xx, D_yy, D_xy, D_θθ (zero in plane strain).
+template <typename Scalar>
+struct StrainRate {
+  Scalar xx, yy, xy, tt;
+  Scalar ddot() const { return xx * xx + yy * yy + 2.0 * xy * xy + tt * tt; }
+  Scalar divergence() const { return xx + yy + tt; }
+};
+
+template <typename Scalar>
+StrainRate<Scalar> strainRateAt(const CellQuadrature& cq, int q, Geometry geometry,
+                                const Scalar* dofs) {
+  StrainRate<Scalar> d{0.0, 0.0, 0.0, 0.0};
+  Scalar ur = 0.0;
+  for (int a = 0; a < cq.numNodes; ++a) {
+    const Scalar& ux = dofs[kDofsPerNode * a + kUx];
+    const Scalar& uy = dofs[kDofsPerNode * a + kUy];
+    d.xx += cq.dNdx[q][a] * ux;
+    d.yy += cq.dNdy[q][a] * uy;
+    d.xy += 0.5 * (cq.dNdy[q][a] * ux + cq.dNdx[q][a] * uy);
+    ur += cq.N[q][a] * ux;
+  }
+  if (geometry == Geometry::Axisymmetric) d.tt = ur / cq.x[q];
+  return d;
+}
+
+/// Integration weight of point q, with the 2π r of the axisymmetric measure.
+inline double measureWeight(const CellQuadrature& cq, int q, Geometry geometry) {
+  return geometry == Geometry::Axisymmetric ? 2.0 * M_PI * cq.x[q] * cq.weight[q] : cq.weight[q];
+}
+
+/// Adds the cell residual (kDofsPerNode per node, node-major) into `residual`.
+/// `cq` is the integration rule, `centroid` a one-point rule at the centroid (for μ_K),
+/// `hK` the cell diameter.
+template <typename Scalar, typename PScalar>
+void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, double hK,
+                     const FlowKernelSettings& settings, const MaterialParameters<PScalar>& material,
+                     const Scalar* dofs, Scalar* residual) {
+  const Geometry geometry = settings.geometry;
+  const double fx = settings.bodyForce[0], fy = settings.bodyForce[1];
+
+  // τ_K = β h_K² / (2 μ_K)
+  const StrainRate<Scalar> dc = strainRateAt(centroid, 0, geometry, dofs);
+  const Scalar muK = viscosity(regularizedStrainRate(dc.ddot(), material), material);
+  const Scalar tau = settings.beta * hK * hK / (2.0 * muK);
+
+  for (int q = 0; q < cq.numPoints; ++q) {
+    const double w = measureWeight(cq, q, geometry);
+    const StrainRate<Scalar> d = strainRateAt(cq, q, geometry, dofs);
+    const Scalar twoMu = 2.0 * viscosity(regularizedStrainRate(d.ddot(), material), material);
+    const Scalar sxx = twoMu * d.xx, syy = twoMu * d.yy, sxy = twoMu * d.xy, stt = twoMu * d.tt;
+    const Scalar divU = d.divergence();
+
+    Scalar p = 0.0, dpdx = 0.0, dpdy = 0.0;
+    for (int a = 0; a < cq.numNodes; ++a) {
+      const Scalar& pa = dofs[kDofsPerNode * a + kP];
+      p += cq.N[q][a] * pa;
+      dpdx += cq.dNdx[q][a] * pa;
+      dpdy += cq.dNdy[q][a] * pa;
+    }
+    const Scalar gx = tau * (dpdx - fx), gy = tau * (dpdy - fy);
+    const double invR = geometry == Geometry::Axisymmetric ? 1.0 / cq.x[q] : 0.0;
+
+    for (int a = 0; a < cq.numNodes; ++a) {
+      const double N = cq.N[q][a], Nx = cq.dNdx[q][a], Ny = cq.dNdy[q][a];
+      // s : D(N_a e_x) = s_xx N_x + s_xy N_y + s_θθ N / r;  div(N_a e_x) = N_x + N / r
+      residual[kDofsPerNode * a + kUx] +=
+          w * (sxx * Nx + sxy * Ny + stt * (N * invR) - p * (Nx + N * invR) - N * fx);
+      // s : D(N_a e_y) = s_xy N_x + s_yy N_y;  div(N_a e_y) = N_y
+      residual[kDofsPerNode * a + kUy] += w * (sxy * Nx + syy * Ny - p * Ny - N * fy);
+      residual[kDofsPerNode * a + kP] += w * (-N * divU - (Nx * gx + Ny * gy));
+    }
+  }
+}
+
+}  // namespace flowform

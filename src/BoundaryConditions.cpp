@@ -1,0 +1,178 @@
+#include "flowform/BoundaryConditions.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <unordered_set>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "flowform/BoundaryCurve.hpp"
+#include "flowform/InputError.hpp"
+
+namespace flowform {
+
+namespace {
+
+/// One linear condition a·u = b from a named group, before the per-node reduction.
+struct LinearCondition {
+  double a[2];
+  double b;
+  std::string group;
+};
+
+std::string describeNode(const Mesh& mesh, GO node) {
+  std::ostringstream os;
+  os << "node " << node << " at (" << mesh.coords[node][0] << ", " << mesh.coords[node][1] << ")";
+  return os.str();
+}
+
+/// Reduces the conditions at one node to a NodeConstraint; InputError when they conflict.
+NodeConstraint reduceConditions(const std::vector<LinearCondition>& conds, const Mesh& mesh, GO node) {
+  NodeConstraint nc;
+  const LinearCondition* first = nullptr;
+  const LinearCondition* second = nullptr;
+  for (const auto& c : conds) {
+    if (!first) { first = &c; continue; }
+    const double cross = first->a[0] * c.a[1] - first->a[1] * c.a[0];
+    if (!second && std::abs(cross) > 1e-8) { second = &c; continue; }
+    // Dependent on what we have: it must agree with it.
+    double predicted;
+    if (second) {
+      // both components already fixed below; check a·v = b after solving
+      continue;
+    }
+    const double dot = first->a[0] * c.a[0] + first->a[1] * c.a[1];  // ±1 for unit vectors
+    predicted = dot * first->b;
+    if (std::abs(predicted - c.b) > 1e-12 * (1.0 + std::abs(c.b)))
+      throw InputError("boundary conditions of groups '" + first->group + "' and '" + c.group +
+                       "' conflict at " + describeNode(mesh, node) + ": they prescribe different values "
+                       "for the same velocity component");
+  }
+  if (!first) return nc;
+  if (!second) {
+    nc.kind = NodeConstraint::Kind::Single;
+    nc.a[0] = first->a[0]; nc.a[1] = first->a[1]; nc.b = first->b;
+    nc.constrainedRow = std::abs(nc.a[0]) >= std::abs(nc.a[1]) ? kUx : kUy;
+    // t ⊥ a, signed so that the kept row keeps its own sign (t_o > 0).
+    nc.t[0] = -nc.a[1]; nc.t[1] = nc.a[0];
+    if (nc.t[1 - nc.constrainedRow] < 0) { nc.t[0] = -nc.t[0]; nc.t[1] = -nc.t[1]; }
+    return nc;
+  }
+  // Two independent conditions: solve [a1; a2] v = [b1; b2].
+  const double det = first->a[0] * second->a[1] - first->a[1] * second->a[0];
+  nc.kind = NodeConstraint::Kind::Full;
+  nc.value[0] = (first->b * second->a[1] - first->a[1] * second->b) / det;
+  nc.value[1] = (first->a[0] * second->b - first->b * second->a[0]) / det;
+  for (const auto& c : conds) {
+    const double residual = c.a[0] * nc.value[0] + c.a[1] * nc.value[1] - c.b;
+    if (std::abs(residual) > 1e-10 * (1.0 + std::abs(c.b)))
+      throw InputError("boundary conditions of groups '" + first->group + "', '" + second->group +
+                       "' and '" + c.group + "' conflict at " + describeNode(mesh, node));
+  }
+  return nc;
+}
+
+GO edgeKey(GO a, GO b, GO numNodes) { return std::min(a, b) * numNodes + std::max(a, b); }
+
+}  // namespace
+
+Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParameters() {
+  static Teuchos::RCP<Teuchos::ParameterList> valid;
+  if (valid.is_null()) {
+    valid = Teuchos::rcp(new Teuchos::ParameterList("Boundary Condition"));
+    Teuchos::setStringToIntegralParameter<int>(
+        "Type", "Traction", "Velocity: prescribed velocity components; Symmetry: zero normal "
+        "velocity on a straight boundary; Traction: prescribed traction (default zero: free). "
+        "Traction X/Y act on any type, on the components it leaves free",
+        Teuchos::tuple<std::string>("Velocity", "Symmetry", "Traction"), valid.get());
+    valid->set("Velocity X", 0.0, "prescribed u_x (Velocity type; omit to leave u_x free)");
+    valid->set("Velocity Y", 0.0, "prescribed u_y (Velocity type; omit to leave u_y free)");
+    valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components");
+    valid->set("Traction Y", 0.0, "traction t_y, force per unit area, on free components");
+  }
+  return valid;
+}
+
+BoundaryConditions::BoundaryConditions(const Teuchos::ParameterList& bcList, const Mesh& mesh,
+                                       const DofMap& dofMap) {
+  std::vector<std::vector<LinearCondition>> conditions(mesh.numNodes());
+  std::vector<std::pair<const BoundaryGroup*, std::array<double, 2>>> tractionGroups;
+
+  for (auto it = bcList.begin(); it != bcList.end(); ++it) {
+    const std::string& name = bcList.name(it);
+    if (!bcList.isSublist(name))
+      throw InputError("Boundary Conditions/" + name + " must be a sublist named after a mesh group");
+    if (!mesh.hasBoundary(name))
+      throw InputError("Boundary Conditions/" + name + ": mesh '" + mesh.source +
+                       "' has no boundary group of that name; it has: " + mesh.boundaryNames());
+    Teuchos::ParameterList group = bcList.sublist(name);  // copy: validation sets defaults
+    try {
+      group.validateParameters(*validGroupParameters());
+    } catch (const std::exception& e) {
+      throw InputError("Boundary Conditions/" + name + ": " + e.what());
+    }
+    const std::string type = group.get<std::string>("Type", "Traction");
+    const BoundaryGroup& bg = mesh.boundary(name);
+
+    if (type == "Velocity") {
+      const bool hasX = group.isParameter("Velocity X"), hasY = group.isParameter("Velocity Y");
+      if (!hasX && !hasY)
+        throw InputError("Boundary Conditions/" + name + ": type Velocity needs 'Velocity X' and/or 'Velocity Y'");
+      for (const auto& e : bg.edges)
+        for (GO n : e) {
+          if (hasX) conditions[n].push_back({{1.0, 0.0}, group.get<double>("Velocity X"), name});
+          if (hasY) conditions[n].push_back({{0.0, 1.0}, group.get<double>("Velocity Y"), name});
+        }
+    } else if (type == "Symmetry") {
+      const BoundaryCurve curve = buildBoundaryCurve(mesh, bg);
+      if (!curve.isStraight(1e-8))
+        throw InputError("Boundary Conditions/" + name + ": a Symmetry group must be straight, and '" +
+                         name + "' is curved or has a corner");
+      const auto& n = curve.segmentNormals.front();
+      for (GO node : curve.nodes) conditions[node].push_back({{n[0], n[1]}, 0.0, name});
+    }
+    // A traction acts on every group that gives one: on a Velocity or Symmetry group it
+    // loads the free component(s) only, since the constrained rows are replaced.
+    tractionGroups.push_back({&bg, {group.get<double>("Traction X", 0.0), group.get<double>("Traction Y", 0.0)}});
+  }
+
+  const auto& overlapNodes = dofMap.overlapNodes();
+  m_constraints.resize(overlapNodes.size());
+  for (size_t i = 0; i < overlapNodes.size(); ++i)
+    m_constraints[i] = reduceConditions(conditions[overlapNodes[i]], mesh, overlapNodes[i]);
+
+  // Traction edges: those that are an edge of one of this rank's cells.
+  if (!tractionGroups.empty()) {
+    const int npc = nodesPerCell(mesh.cellType);
+    std::unordered_set<GO> myEdges;
+    for (GO c : dofMap.cells())
+      for (int a = 0; a < npc; ++a)
+        myEdges.insert(edgeKey(mesh.cell(c)[a], mesh.cell(c)[(a + 1) % npc], mesh.numNodes()));
+    for (const auto& [bg, t] : tractionGroups) {
+      if (t[0] == 0.0 && t[1] == 0.0) continue;  // free: nothing to assemble
+      for (const auto& e : bg->edges)
+        if (myEdges.count(edgeKey(e[0], e[1], mesh.numNodes())))
+          m_tractionEdges.push_back({{dofMap.overlapIndex(e[0]), dofMap.overlapIndex(e[1])}, {t[0], t[1]}});
+    }
+  }
+}
+
+void BoundaryConditions::imposeOnSolution(Vector& xOwned) const {
+  auto x = xOwned.getLocalViewHost(Tpetra::Access::ReadWrite);
+  const size_t numOwned = xOwned.getLocalLength() / kDofsPerNode;
+  for (size_t i = 0; i < numOwned; ++i) {
+    const NodeConstraint& nc = m_constraints[i];
+    double* u = &x(kDofsPerNode * i, 0);
+    if (nc.kind == NodeConstraint::Kind::Full) {
+      u[kUx] = nc.value[0];
+      u[kUy] = nc.value[1];
+    } else if (nc.kind == NodeConstraint::Kind::Single) {
+      // Move u along a until a·u = b (a is a unit vector).
+      const double gap = nc.b - (nc.a[0] * u[kUx] + nc.a[1] * u[kUy]);
+      u[kUx] += gap * nc.a[0];
+      u[kUy] += gap * nc.a[1];
+    }
+  }
+}
+
+}  // namespace flowform

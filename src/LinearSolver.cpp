@@ -1,0 +1,105 @@
+#include "flowform/LinearSolver.hpp"
+
+#include <stdexcept>
+
+#include <Amesos2.hpp>
+#include <Teuchos_DefaultSerialComm.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+
+namespace flowform {
+
+using Amesos2Solver = Amesos2::Solver<CrsMatrix, MultiVector>;
+
+struct LinearSolver::Impl {
+  // Serial path.
+  Teuchos::RCP<const CrsMatrix> matrix;
+  Teuchos::RCP<Amesos2Solver> solver;
+  // Gather-to-root path.
+  bool gather = false;
+  Teuchos::RCP<const Map> rootMap;          ///< all rows on rank 0 (distributed comm)
+  Teuchos::RCP<const Import> toRoot;        ///< owned -> root
+  Teuchos::RCP<const Map> serialRowMap;     ///< rank 0 only, serial comm
+  Teuchos::RCP<CrsMatrix> serialMatrix;     ///< rank 0 only
+};
+
+LinearSolver::LinearSolver() : m_impl(new Impl) {}
+LinearSolver::~LinearSolver() = default;
+
+namespace {
+
+void numericFactor(Amesos2Solver& solver) {
+  try {
+    solver.numericFactorization();
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("KLU2 numeric factorization failed (singular Jacobian?): ") + e.what());
+  }
+}
+
+}  // namespace
+
+void LinearSolver::factor(const Teuchos::RCP<const CrsMatrix>& A) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: factorization"));
+  Impl& d = *m_impl;
+  const auto comm = A->getRowMap()->getComm();
+  ++m_numFactorizations;
+
+  if (comm->getSize() == 1) {
+    if (d.solver.is_null() || d.matrix.get() != A.get()) {
+      d.matrix = A;
+      d.solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", A);
+      d.solver->symbolicFactorization();
+    }
+    numericFactor(*d.solver);
+    return;
+  }
+
+  // Gather the rows to rank 0 and factor there with a serial KLU2.
+  d.gather = true;
+  if (d.rootMap.is_null()) {
+    const Tpetra::global_size_t n = A->getRowMap()->getGlobalNumElements();
+    const size_t local = comm->getRank() == 0 ? n : 0;
+    d.rootMap = Teuchos::rcp(new Map(n, local, 0, comm));
+    d.toRoot = Teuchos::rcp(new Import(A->getRowMap(), d.rootMap));
+    if (comm->getRank() == 0)
+      d.serialRowMap = Teuchos::rcp(new Map(n, 0, Teuchos::rcp(new Teuchos::SerialComm<int>())));
+  }
+  CrsMatrix rootMatrix(d.rootMap, 0);
+  rootMatrix.doImport(*A, *d.toRoot, Tpetra::INSERT);
+  rootMatrix.fillComplete(d.rootMap, d.rootMap);
+  if (comm->getRank() != 0) return;
+
+  // Same local CSR, maps on a serial communicator (a shallow copy of the arrays).
+  const auto rootCols = rootMatrix.getColMap();
+  std::vector<GO> colGids(rootCols->getNodeNumElements());
+  for (size_t j = 0; j < colGids.size(); ++j) colGids[j] = rootCols->getGlobalElement(j);
+  auto serialComm = d.serialRowMap->getComm();
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto serialColMap = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(colGids), 0, serialComm));
+  d.serialMatrix = Teuchos::rcp(new CrsMatrix(d.serialRowMap, serialColMap, rootMatrix.getLocalMatrixDevice()));
+  d.serialMatrix->fillComplete(d.serialRowMap, d.serialRowMap);
+  // A new matrix object each time: KLU2 redoes its (cheap, AMD) ordering.
+  d.solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", d.serialMatrix);
+  d.solver->symbolicFactorization();
+  numericFactor(*d.solver);
+}
+
+void LinearSolver::solve(const MultiVector& b, MultiVector& x) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: linear solve"));
+  Impl& d = *m_impl;
+  ++m_numSolves;
+  if (!d.gather) {
+    d.solver->solve(Teuchos::ptrFromRef(x), Teuchos::ptrFromRef(b));
+    return;
+  }
+  MultiVector bRoot(d.rootMap, b.getNumVectors()), xRoot(d.rootMap, b.getNumVectors());
+  bRoot.doImport(b, *d.toRoot, Tpetra::INSERT);
+  if (b.getMap()->getComm()->getRank() == 0) {
+    MultiVector bSerial(d.serialRowMap, b.getNumVectors()), xSerial(d.serialRowMap, b.getNumVectors());
+    Tpetra::deep_copy(bSerial, bRoot);  // same local layout
+    d.solver->solve(Teuchos::ptrFromRef(xSerial), Teuchos::ptrFromRef(bSerial));
+    Tpetra::deep_copy(xRoot, xSerial);
+  }
+  x.doExport(xRoot, *d.toRoot, Tpetra::INSERT);
+}
+
+}  // namespace flowform

@@ -1,0 +1,237 @@
+#include "flowform/NonlinearSolver.hpp"
+
+#include <cmath>
+#include <iomanip>
+
+#include <NOX.H>
+#include <NOX_Observer.hpp>
+#include <NOX_Solver_LineSearchBased.H>
+#include <NOX_StatusTest_Generic.H>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "flowform/FlowGroup.hpp"
+#include "flowform/Log.hpp"
+
+namespace flowform {
+
+namespace {
+
+/// Converged when the residual is small, absolutely or relative to the stage's first
+/// residual, AND the last Newton update is small relative to the solution:
+///   (||F|| ≤ atol  or  ||F|| ≤ rtol ||F_0||)  and  ||Δx|| ≤ utol (||x|| + utol).
+class ResidualAndStepTest : public NOX::StatusTest::Generic {
+ public:
+  ResidualAndStepTest(double atol, double rtol, double utol) : m_atol(atol), m_rtol(rtol), m_utol(utol) {}
+
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
+    const auto& group = solver.getSolutionGroup();
+    m_normF = group.getNormF();
+    if (solver.getNumIterations() == 0) {
+      m_normF0 = m_normF;
+      m_status = m_normF <= m_atol ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+      return m_status;
+    }
+    if (m_scratch.is_null()) m_scratch = group.getX().clone(NOX::ShapeCopy);
+    m_scratch->update(1.0, group.getX(), -1.0, solver.getPreviousSolutionGroup().getX(), 0.0);
+    m_normDx = m_scratch->norm();
+    const double normX = group.getX().norm();
+    const bool residualOk = m_normF <= m_atol || m_normF <= m_rtol * m_normF0;
+    const bool stepOk = m_normDx <= m_utol * (normX + m_utol);
+    m_status = residualOk && stepOk ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+    return m_status;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return m_status; }
+  std::ostream& print(std::ostream& os, int indent) const override {
+    os << std::string(indent, ' ') << "residual " << m_normF << " (atol " << m_atol << ", rtol " << m_rtol
+       << "), update " << m_normDx << " (utol " << m_utol << ")\n";
+    return os;
+  }
+  double normDx() const { return m_normDx; }
+
+ private:
+  double m_atol, m_rtol, m_utol;
+  double m_normF = 0.0, m_normF0 = 0.0, m_normDx = 0.0;
+  NOX::StatusTest::StatusType m_status = NOX::StatusTest::Unevaluated;
+  Teuchos::RCP<NOX::Abstract::Vector> m_scratch;
+};
+
+/// Logs one line per Newton iteration: ||F||, ||Δx|| and the line-search step.
+class NewtonLogger : public NOX::Observer {
+ public:
+  explicit NewtonLogger(const ResidualAndStepTest& test) : m_test(test) {}
+  void runPostIterate(const NOX::Solver::Generic& solver) override {
+    double step = 1.0;
+    if (auto ls = dynamic_cast<const NOX::Solver::LineSearchBased*>(&solver)) step = ls->getStepSize();
+    const double normF = solver.getSolutionGroup().getNormF();
+    const double normDx = m_test.normDx();  // the status test ran just before (TOOLCHAIN.md)
+    log() << "    newton " << std::setw(2) << solver.getNumIterations() << "  |F| = " << std::scientific
+          << std::setprecision(3) << normF << "  |dx| = " << normDx << "  step = " << std::defaultfloat
+          << step << "\n";
+  }
+
+ private:
+  const ResidualAndStepTest& m_test;
+};
+
+bool isFinite(const Vector& v) { return std::isfinite(v.norm2()); }
+
+}  // namespace
+
+Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
+  static Teuchos::RCP<Teuchos::ParameterList> valid;
+  if (!valid.is_null()) return valid;
+  valid = Teuchos::rcp(new Teuchos::ParameterList("Solver"));
+  using Teuchos::EnhancedNumberValidator;
+  auto positive = Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1e300));
+  valid->set("Max Newton Iterations", 40, "Newton iterations per continuation stage",
+             Teuchos::rcp(new EnhancedNumberValidator<int>(1, 10000)));
+  valid->set("Absolute Residual Tolerance", 1e-10, "||F||_2 below this is converged", positive);
+  valid->set("Relative Residual Tolerance", 1e-9, "||F||_2 / ||F_0||_2 below this is converged", positive);
+  valid->set("Update Tolerance", 1e-8, "and ||dx||_2 <= this × (||x||_2 + this)", positive);
+  Teuchos::setStringToIntegralParameter<int>(
+      "Line Search", "Backtrack", "NOX line search: Backtrack (halving on ||F||), Polynomial, Full Step",
+      Teuchos::tuple<std::string>("Backtrack", "Polynomial", "Full Step"), valid.get());
+  Teuchos::ParameterList& cont = valid->sublist("Continuation", false, "continuation in n and e0");
+  cont.set("Start Exponent", 1.0, "n at the first stage", positive);
+  cont.set("Start Cutoff", 0.1, "e0 at the first stage (if larger than the target's)", positive);
+  cont.set("Initial Step", 0.25, "first step in the continuation parameter λ ∈ (0, 1]",
+           Teuchos::rcp(new EnhancedNumberValidator<double>(1e-6, 1.0)));
+  cont.set("Minimum Step", 1.0 / 256, "give up when a failed stage halves the step below this",
+           Teuchos::rcp(new EnhancedNumberValidator<double>(1e-12, 1.0)));
+  cont.set("Growth Factor", 2.0, "step growth after a stage that took at most 5 Newton iterations",
+           Teuchos::rcp(new EnhancedNumberValidator<double>(1.0, 100.0)));
+  return valid;
+}
+
+NonlinearSolver::NonlinearSolver(FlowModel& model, const Teuchos::ParameterList& params)
+    : m_model(model), m_params(params) {
+  m_params.validateParametersAndSetDefaults(*validParameters());
+}
+
+double NonlinearSolver::linearSolve(Vector& x, const FlowPhysics& physics) {
+  m_model.setPhysics(physics);
+  Vector f(x.getMap()), dx(x.getMap());
+  m_model.residual(x, f);
+  m_model.computeJacobian(x);
+  m_model.solve(f, dx);
+  x.update(-1.0, dx, 1.0);
+  m_model.residual(x, f);
+  return f.norm2();
+}
+
+StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics) {
+  m_model.setPhysics(physics);
+  StageReport report{physics.material.rateExponent, physics.material.cutoff, 0, false, 0.0};
+
+  auto group = Teuchos::rcp(new FlowGroup(m_model, x));
+  auto residualTest = Teuchos::rcp(new ResidualAndStepTest(m_params.get<double>("Absolute Residual Tolerance"),
+                                                           m_params.get<double>("Relative Residual Tolerance"),
+                                                           m_params.get<double>("Update Tolerance")));
+  auto maxIters = Teuchos::rcp(new NOX::StatusTest::MaxIters(m_params.get<int>("Max Newton Iterations")));
+  auto finite = Teuchos::rcp(new NOX::StatusTest::FiniteValue);
+  auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
+  tests->addStatusTest(finite);
+  tests->addStatusTest(residualTest);
+  tests->addStatusTest(maxIters);
+
+  auto noxParams = Teuchos::rcp(new Teuchos::ParameterList("NOX"));
+  noxParams->set("Nonlinear Solver", "Line Search Based");
+  noxParams->sublist("Direction").set("Method", "Newton");
+  const std::string lineSearch = m_params.get<std::string>("Line Search");
+  Teuchos::ParameterList& ls = noxParams->sublist("Line Search");
+  ls.set("Method", lineSearch);
+  if (lineSearch == "Backtrack") {
+    ls.sublist("Backtrack").set("Max Iters", 12);
+    ls.sublist("Backtrack").set("Minimum Step", 1e-4);
+  }
+  noxParams->sublist("Printing").set("Output Information", NOX::Utils::Error);
+  noxParams->sublist("Solver Options").set<Teuchos::RCP<NOX::Observer>>("Observer",
+                                                                           Teuchos::rcp(new NewtonLogger(*residualTest)));
+  auto solver = NOX::Solver::buildSolver(group, tests, noxParams);
+  const NOX::StatusTest::StatusType status = solver->solve();
+
+  report.newtonIterations = solver->getNumIterations();
+  report.residualNorm = solver->getSolutionGroup().getNormF();
+  report.converged = status == NOX::StatusTest::Converged && std::isfinite(report.residualNorm);
+  if (report.converged) Tpetra::deep_copy(x, *tpetraVector(solver->getSolutionGroup().getX()));
+  return report;
+}
+
+SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target) {
+  SolveReport report;
+  const double atol = m_params.get<double>("Absolute Residual Tolerance");
+  const double rtol = m_params.get<double>("Relative Residual Tolerance");
+
+  if (isNewtonian(target.material)) {
+    // Linear: one factorization and one solve; the second residual only verifies it.
+    report.linear = true;
+    Vector f(x.getMap());
+    m_model.residual(x, f);
+    const double normF0 = f.norm2();
+    report.residualNorm = linearSolve(x, target);
+    report.converged = std::isfinite(report.residualNorm) && report.residualNorm <= std::max(atol, 10 * rtol * normF0);
+    log() << "  linear solve: |F| = " << std::scientific << std::setprecision(3) << normF0 << " -> "
+          << report.residualNorm << std::defaultfloat << "\n";
+    if (!report.converged) report.message = "the linear solve left a residual " + std::to_string(report.residualNorm);
+    return report;
+  }
+
+  // Newtonian predictor: μ = 1/(3γ) everywhere.
+  FlowPhysics stokes = target;
+  stokes.material.yieldStress = 0.0;
+  stokes.material.rateExponent = 1.0;
+  const double predictorResidual = linearSolve(x, stokes);
+  log() << "  Newtonian predictor: |F| = " << std::scientific << std::setprecision(3) << predictorResidual
+        << std::defaultfloat << "\n";
+  if (!isFinite(x)) {
+    report.message = "the Newtonian predictor produced a non-finite solution (singular Jacobian?)";
+    return report;
+  }
+
+  const Teuchos::ParameterList& cont = m_params.sublist("Continuation");
+  const double nStart = std::min(cont.get<double>("Start Exponent"), target.material.rateExponent);
+  const double e0Start = std::max(cont.get<double>("Start Cutoff"), target.material.cutoff);
+  const bool needsContinuation = nStart < target.material.rateExponent || e0Start > target.material.cutoff;
+  double step = needsContinuation ? cont.get<double>("Initial Step") : 1.0;
+  const double minStep = cont.get<double>("Minimum Step");
+  const double growth = cont.get<double>("Growth Factor");
+
+  double lambda = 0.0;
+  Vector xConverged(x, Teuchos::Copy);
+  while (lambda < 1.0) {
+    const double next = std::min(1.0, lambda + step);
+    FlowPhysics stage = target;
+    stage.material.rateExponent = std::pow(nStart, 1.0 - next) * std::pow(target.material.rateExponent, next);
+    stage.material.cutoff = std::pow(e0Start, 1.0 - next) * std::pow(target.material.cutoff, next);
+    if (next == 1.0) stage.material = target.material;  // exactly the target, no rounding
+    log() << "  stage lambda = " << next << ": n = " << stage.material.rateExponent
+          << ", e0 = " << stage.material.cutoff << "\n";
+    Tpetra::deep_copy(x, xConverged);
+    StageReport sr = newton(x, stage);
+    report.stages.push_back(sr);
+    report.newtonIterations += sr.newtonIterations;
+    report.residualNorm = sr.residualNorm;
+    if (sr.converged) {
+      lambda = next;
+      Tpetra::deep_copy(xConverged, x);
+      ++report.continuationStages;
+      if (sr.newtonIterations <= 5) step *= growth;
+    } else {
+      step *= 0.5;
+      log() << "  stage failed after " << sr.newtonIterations << " iterations (|F| = " << sr.residualNorm
+            << "); step -> " << step << "\n";
+      if (step < minStep || !needsContinuation) {
+        report.message = "Newton did not converge at n = " + std::to_string(stage.material.rateExponent) +
+                         ", e0 = " + std::to_string(stage.material.cutoff) + " (|F| = " +
+                         std::to_string(sr.residualNorm) + ")";
+        Tpetra::deep_copy(x, xConverged);
+        m_model.setPhysics(target);
+        return report;
+      }
+    }
+  }
+  report.converged = true;
+  return report;
+}
+
+}  // namespace flowform

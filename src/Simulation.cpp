@@ -1,0 +1,274 @@
+#include "flowform/Simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <nlohmann/json.hpp>
+
+#include "flowform/BoundaryCurve.hpp"
+#include "flowform/InputError.hpp"
+#include "flowform/Log.hpp"
+#include "flowform/MeshReader.hpp"
+#include "flowform/io/BoundaryCsvWriter.hpp"
+#include "flowform/io/JsonSummary.hpp"
+#include "flowform/io/XdmfWriter.hpp"
+
+namespace flowform {
+
+namespace {
+
+using Teuchos::EnhancedNumberValidator;
+using Teuchos::ParameterList;
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double timerSeconds(const std::string& name) {
+  auto t = Teuchos::TimeMonitor::lookupCounter(name);
+  return t.is_null() ? 0.0 : t->totalElapsedTime();
+}
+
+/// Validates `list` against `valid` (setting defaults), naming the sublist on failure.
+void validateSublist(ParameterList& list, const ParameterList& valid, const std::string& where, int depth = 1000) {
+  try {
+    list.validateParametersAndSetDefaults(valid, depth);
+  } catch (const std::exception& e) {
+    throw InputError("in " + where + ": " + e.what());
+  }
+}
+
+void requirePositive(const ParameterList& list, const std::string& name, const std::string& where) {
+  const double v = list.get<double>(name);
+  if (!(v > 0.0))
+    throw InputError(where + "/" + name + " must be > 0 (got " + std::to_string(v) + ")");
+}
+
+}  // namespace
+
+Teuchos::RCP<const ParameterList> Simulation::validParameters() {
+  static Teuchos::RCP<ParameterList> valid;
+  if (!valid.is_null()) return valid;
+  valid = Teuchos::rcp(new ParameterList("flowform"));
+  auto nonNegative = Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1e300));
+
+  ParameterList& problem = valid->sublist("Problem", false, "kind of model");
+  Teuchos::setStringToIntegralParameter<int>("Geometry", "Plane Strain",
+                                             "Plane Strain (per unit depth) or Axisymmetric (x = r, y = z)",
+                                             Teuchos::tuple<std::string>("Plane Strain", "Axisymmetric"), &problem);
+  problem.set("Body Force X", 0.0, "f_x, force per unit volume");
+  problem.set("Body Force Y", 0.0, "f_y, force per unit volume");
+
+  ParameterList& material = valid->sublist("Material", false, "rigid-viscoplastic law (SPEC §1)");
+  material.set("Yield Stress", 1.0, "σ0 >= 0 [stress]", nonNegative);
+  material.set("Rate Constant", 1.0, "γ > 0 [1/time]");
+  material.set("Rate Exponent", 1.0, "n > 0: σ̄ = σ0 + (e/γ)^(1/n)");
+  material.set("Strain Rate Cutoff", 1e-3, "e0 > 0: e_r = sqrt(e² + e0²) [1/time]");
+
+  ParameterList& stab = valid->sublist("Stabilization", false, "pressure stabilization");
+  stab.set("Beta", 0.1, "β in τ_K = β h_K² / (2 μ_K); h_K = cell diameter (docs/verification.md)", nonNegative);
+
+  valid->set("Mesh", *validMeshParameters(), "the mesh (gmsh .msh or .geo)");
+  valid->sublist("Boundary Conditions", false, "one sublist per boundary group name");
+  valid->set("Solver", *NonlinearSolver::validParameters(), "Newton and continuation");
+
+  ParameterList& output = valid->sublist("Output", false, "what is written");
+  output.set("Write Solution", true, "solution.h5 + solution.xdmf");
+  output.set("Boundary CSV", true, "one CSV per named boundary group");
+  output.set("Cell Fields", Teuchos::Array<std::string>({"strain_rate", "equivalent_stress", "viscosity"}),
+             "cell fields to write: any of strain_rate, equivalent_stress, viscosity");
+  valid->sublist("Regression", false, "expected values for the regression checker (scripts/check_regression)");
+  return valid;
+}
+
+Simulation::Simulation(const ParameterList& caseParams, const std::string& baseDir,
+                       const Teuchos::RCP<const Comm>& comm)
+    : m_params(caseParams), m_comm(comm) {
+  const auto start = std::chrono::steady_clock::now();
+  const ParameterList& valid = *validParameters();
+  validateSublist(m_params, valid, "the case parameter list", 0);
+  for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output"})
+    validateSublist(m_params.sublist(name), valid.sublist(name), name);
+  if (!m_params.isSublist("Mesh") || !m_params.sublist("Mesh").isParameter("File"))
+    throw InputError("the case has no Mesh/File: name a .msh or .geo file");
+  validateSublist(m_params.sublist("Mesh"), valid.sublist("Mesh"), "Mesh", 0);
+
+  const ParameterList& mat = m_params.sublist("Material");
+  for (const char* name : {"Rate Constant", "Rate Exponent", "Strain Rate Cutoff"})
+    requirePositive(mat, name, "Material");
+  for (const auto& name : m_params.sublist("Output").get<Teuchos::Array<std::string>>("Cell Fields"))
+    if (name != "strain_rate" && name != "equivalent_stress" && name != "viscosity")
+      throw InputError("Output/Cell Fields: unknown field '" + name +
+                       "'; allowed: strain_rate, equivalent_stress, viscosity");
+
+  m_physics.material = {mat.get<double>("Yield Stress"), mat.get<double>("Rate Constant"),
+                        mat.get<double>("Rate Exponent"), mat.get<double>("Strain Rate Cutoff")};
+  const ParameterList& problem = m_params.sublist("Problem");
+  m_physics.kernel.geometry =
+      problem.get<std::string>("Geometry") == "Axisymmetric" ? Geometry::Axisymmetric : Geometry::PlaneStrain;
+  m_physics.kernel.bodyForce[0] = problem.get<double>("Body Force X");
+  m_physics.kernel.bodyForce[1] = problem.get<double>("Body Force Y");
+  m_physics.kernel.beta = m_params.sublist("Stabilization").get<double>("Beta");
+
+  m_mesh = readMesh(m_params.sublist("Mesh"), baseDir, *comm);
+  if (m_physics.kernel.geometry == Geometry::Axisymmetric)
+    for (const auto& xy : m_mesh.coords)
+      if (xy[0] < -1e-12)
+        throw InputError("Problem/Geometry is Axisymmetric but mesh '" + m_mesh.source +
+                         "' has nodes at x = r < 0; the axis is x = 0 and the section must lie in x >= 0");
+
+  m_dofMap = std::make_unique<DofMap>(m_mesh, comm);
+  m_bcs = std::make_unique<BoundaryConditions>(m_params.sublist("Boundary Conditions"), m_mesh, *m_dofMap);
+  m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
+  m_assembler->setPhysics(m_physics);
+  m_model = std::make_unique<FlowModel>(*m_assembler);
+  m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
+  m_bcs->imposeOnSolution(*m_solution);
+  m_setupSeconds = secondsSince(start);
+}
+
+Simulation::~Simulation() = default;
+
+const SolveReport& Simulation::run() {
+  const auto start = std::chrono::steady_clock::now();
+  log() << "flowform: " << m_mesh.numNodes() << " nodes, " << m_mesh.numCells() << " "
+        << cellTypeName(m_mesh.cellType) << " cells, " << m_dofMap->ownedMap()->getGlobalNumElements()
+        << " dofs, " << m_comm->getSize() << " rank(s)\n";
+  NonlinearSolver solver(*m_model, m_params.sublist("Solver"));
+  m_report = solver.solve(*m_solution, m_physics);
+  m_solveSeconds = secondsSince(start);
+  if (m_report.converged)
+    log() << "flowform: converged (" << m_report.newtonIterations << " Newton iterations, "
+          << m_report.continuationStages << " stages, |F| = " << m_report.residualNorm << ")\n";
+  else
+    log() << "flowform: NOT CONVERGED: " << m_report.message << "\n";
+  return m_report;
+}
+
+FieldSet Simulation::gatherFields() const {
+  const GO numNodes = m_mesh.numNodes(), numCells = m_mesh.numCells();
+  const bool root = m_comm->getRank() == 0;
+
+  // Nodal dofs to rank 0.
+  auto rootDofs = Teuchos::rcp(new Map(kDofsPerNode * numNodes, root ? kDofsPerNode * numNodes : 0, 0, m_comm));
+  Vector allDofs(rootDofs);
+  allDofs.doImport(*m_solution, Import(m_dofMap->ownedMap(), rootDofs), Tpetra::INSERT);
+
+  // Cell values at the centroid, computed where the cell is assembled, then to rank 0:
+  // e = sqrt(2/3 D:D), μ(e_r), σ_eq = sqrt(3/2 s:s) = 3 μ e.
+  const auto& cells = m_dofMap->cells();
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto ownedCells = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(cells), 0, m_comm));
+  auto rootCells = Teuchos::rcp(new Map(numCells, root ? numCells : 0, 0, m_comm));
+  MultiVector cellValues(ownedCells, 3), allCells(rootCells, 3);
+  {
+    Vector xOverlap(m_dofMap->overlapMap());
+    xOverlap.doImport(*m_solution, *m_dofMap->importer(), Tpetra::INSERT);
+    auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto v = cellValues.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const int npc = nodesPerCell(m_mesh.cellType);
+    double dofs[kDofsPerNode * kMaxNodesPerCell];
+    std::array<double, 2> xy[kMaxNodesPerCell];
+    CellQuadrature centroid;
+    for (size_t k = 0; k < cells.size(); ++k) {
+      const LO* nodes = &m_dofMap->cellNodes()[npc * k];
+      for (int a = 0; a < npc; ++a) {
+        xy[a] = m_mesh.coords[m_dofMap->overlapNodes()[nodes[a]]];
+        for (int c = 0; c < kDofsPerNode; ++c) dofs[kDofsPerNode * a + c] = x(kDofsPerNode * nodes[a] + c, 0);
+      }
+      computeCellQuadrature(m_mesh.cellType, xy, 1, centroid);
+      const auto d = strainRateAt(centroid, 0, m_physics.kernel.geometry, dofs);
+      const double e = std::sqrt(2.0 / 3.0 * d.ddot());
+      const double mu = viscosity(regularizedStrainRate(d.ddot(), m_physics.material), m_physics.material);
+      v(k, 0) = e;
+      v(k, 1) = 3.0 * mu * e;
+      v(k, 2) = mu;
+    }
+  }
+  allCells.doImport(cellValues, Import(ownedCells, rootCells), Tpetra::INSERT);
+
+  FieldSet fields;
+  if (!root) return fields;
+  auto d = allDofs.getLocalViewHost(Tpetra::Access::ReadOnly);
+  Field velocity{"velocity", 2, std::vector<double>(2 * numNodes)};
+  Field pressure{"pressure", 1, std::vector<double>(numNodes)};
+  for (GO n = 0; n < numNodes; ++n) {
+    velocity.values[2 * n] = d(kDofsPerNode * n + kUx, 0);
+    velocity.values[2 * n + 1] = d(kDofsPerNode * n + kUy, 0);
+    pressure.values[n] = d(kDofsPerNode * n + kP, 0);
+  }
+  fields.nodal = {velocity, pressure};
+  auto c = allCells.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const char* names[3] = {"strain_rate", "equivalent_stress", "viscosity"};
+  for (const auto& wanted : m_params.sublist("Output").get<Teuchos::Array<std::string>>("Cell Fields"))
+    for (int j = 0; j < 3; ++j)
+      if (wanted == names[j]) {
+        Field f{names[j], 1, std::vector<double>(numCells)};
+        for (GO k = 0; k < numCells; ++k) f.values[k] = c(k, j);
+        fields.cell.push_back(std::move(f));
+      }
+  return fields;
+}
+
+void Simulation::writeOutput(const std::string& outDir) const {
+  const auto start = std::chrono::steady_clock::now();
+  const ParameterList& output = m_params.sublist("Output");
+  const FieldSet fields = gatherFields();
+  if (m_comm->getRank() != 0) return;
+  std::filesystem::create_directories(outDir);
+
+  if (output.get<bool>("Write Solution")) writeXdmf(outDir, "solution", m_mesh, fields);
+  if (output.get<bool>("Boundary CSV"))
+    for (const auto& group : m_mesh.boundaries) {
+      try {
+        writeBoundaryCsv(outDir, m_mesh, buildBoundaryCurve(m_mesh, group), fields);
+      } catch (const InputError& e) {
+        log() << "flowform: no CSV for boundary group '" << group.name << "': " << e.what() << "\n";
+      }
+    }
+
+  nlohmann::json summary;
+  summary["converged"] = m_report.converged;
+  summary["exit_status"] = exitStatus();
+  summary["message"] = m_report.message;
+  summary["newton_iterations"] = m_report.newtonIterations;
+  summary["linear_problem"] = m_report.linear;
+  summary["continuation_stages"] = m_report.continuationStages;
+  summary["residual_norm"] = m_report.residualNorm;
+  summary["contact_changes"] = 0;          // no contact walls in this case
+  summary["free_surface_iterations"] = 0;  // no free surfaces in this case
+  summary["dofs"] = m_dofMap->ownedMap()->getGlobalNumElements();
+  summary["mesh"] = {{"file", m_mesh.source}, {"nodes", m_mesh.numNodes()}, {"cells", m_mesh.numCells()},
+                     {"cell_type", cellTypeName(m_mesh.cellType)}};
+  summary["ranks"] = m_comm->getSize();
+  summary["linear_solver"] = {{"factorizations", m_model->linearSolver().numFactorizations()},
+                              {"solves", m_model->linearSolver().numSolves()}};
+  const double assemblyResidual = timerSeconds("flowform: assembly (residual)");
+  const double assemblyJacobian = timerSeconds("flowform: assembly (Jacobian)");
+  summary["timings"] = {{"total", m_setupSeconds + m_solveSeconds + secondsSince(start)},
+                        {"setup", m_setupSeconds},
+                        {"solve", m_solveSeconds},
+                        {"assembly", assemblyResidual + assemblyJacobian},
+                        {"assembly_residual", assemblyResidual},
+                        {"assembly_jacobian", assemblyJacobian},
+                        {"factorization", timerSeconds("flowform: factorization")},
+                        {"linear_solve", timerSeconds("flowform: linear solve")},
+                        {"sensitivity", 0.0},
+                        {"output", secondsSince(start)}};
+  nlohmann::json stages = nlohmann::json::array();
+  for (const auto& s : m_report.stages)
+    stages.push_back({{"rate_exponent", s.rateExponent}, {"cutoff", s.cutoff},
+                      {"newton_iterations", s.newtonIterations}, {"converged", s.converged},
+                      {"residual_norm", s.residualNorm}});
+  summary["stages"] = stages;
+  summary["functionals"] = nlohmann::json::object();
+  summary["sensitivities"] = nlohmann::json::object();
+  summary["fd_check"] = nlohmann::json::object();
+  summary["parameters"] = parameterListToJson(m_params);
+  writeJsonFile(outDir + "/summary.json", summary);
+}
+
+}  // namespace flowform

@@ -1,0 +1,94 @@
+// flowform CASE.xml [-o OUTDIR] [--set Path/To/Param=value ...] [--quiet]
+// Exit status: 0 converged, 2 bad input (nothing written), 3 not converged (results
+// written, flagged in summary.json).
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <Teuchos_TimeMonitor.hpp>
+#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <Tpetra_Core.hpp>
+
+#include "flowform/CaseOverrides.hpp"
+#include "flowform/InputError.hpp"
+#include "flowform/Log.hpp"
+#include "flowform/Simulation.hpp"
+
+namespace {
+
+constexpr int kExitBadInput = 2;
+
+void printHelp() {
+  std::cout <<
+      "flowform — steady-state rigid-viscoplastic flow with frictional contact\n\n"
+      "usage: flowform CASE.xml [-o OUTDIR] [--set Path/To/Param=value ...] [--quiet]\n\n"
+      "  CASE.xml          a Teuchos XML parameter list (see xml/ for documented cases)\n"
+      "  -o OUTDIR         where results go (default: out/<case name>)\n"
+      "  --set P=V         override parameter P (a path of sublists, e.g.\n"
+      "                    'Material/Rate Exponent=5' or 'Mesh/Uniform Refinements=2');\n"
+      "                    repeatable, for sweeps\n"
+      "  --quiet           no progress output\n"
+      "  --help            this text and every valid parameter with its documentation\n\n"
+      "outputs in OUTDIR: summary.json, solution.h5 + solution.xdmf (ParaView),\n"
+      "boundary_<group>.csv per named boundary group\n"
+      "exit status: 0 converged, 2 bad input, 3 not converged (results written, flagged)\n\n"
+      "valid parameters:\n";
+  flowform::Simulation::validParameters()->print(
+      std::cout, Teuchos::ParameterList::PrintOptions().showDoc(true).indent(2).showTypes(true));
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  Tpetra::ScopeGuard scope(&argc, &argv);
+  auto comm = Tpetra::getDefaultComm();
+  flowform::setLogRank(comm->getRank());
+
+  std::string casePath, outDir;
+  std::vector<std::string> overrides;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--help" || arg == "-h") {
+        if (comm->getRank() == 0) printHelp();
+        return 0;
+      } else if (arg == "-o") {
+        if (++i >= argc) throw flowform::InputError("-o needs a directory");
+        outDir = argv[i];
+      } else if (arg == "--set") {
+        if (++i >= argc) throw flowform::InputError("--set needs Path/To/Param=value");
+        overrides.push_back(argv[i]);
+      } else if (arg == "--quiet") {
+        flowform::setLogEnabled(false);
+      } else if (!arg.empty() && arg[0] == '-') {
+        throw flowform::InputError("unknown option '" + arg + "' (see flowform --help)");
+      } else if (casePath.empty()) {
+        casePath = arg;
+      } else {
+        throw flowform::InputError("more than one case file given: '" + casePath + "' and '" + arg + "'");
+      }
+    }
+    if (casePath.empty()) throw flowform::InputError("no case file given (usage: flowform CASE.xml; see --help)");
+    if (!std::filesystem::exists(casePath)) throw flowform::InputError("case file '" + casePath + "' does not exist");
+    if (outDir.empty()) outDir = "out/" + std::filesystem::path(casePath).stem().string();
+
+    Teuchos::RCP<Teuchos::ParameterList> params;
+    try {
+      params = Teuchos::getParametersFromXmlFile(casePath);
+    } catch (const std::exception& e) {
+      throw flowform::InputError("case file '" + casePath + "' is not a valid XML parameter list: " + e.what());
+    }
+    for (const auto& o : overrides) flowform::applyOverride(*params, o, *flowform::Simulation::validParameters());
+
+    const std::string baseDir = std::filesystem::path(casePath).parent_path().string();
+    flowform::Simulation simulation(*params, baseDir.empty() ? "." : baseDir, comm);
+    simulation.run();
+    simulation.writeOutput(outDir);
+    if (comm->getRank() == 0) flowform::log() << "flowform: results in " << outDir << "\n";
+    return simulation.exitStatus();
+  } catch (const flowform::InputError& e) {
+    if (comm->getRank() == 0) std::cerr << "flowform: input error: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+}

@@ -1,0 +1,6 @@
+# Mesh input, partition and boundary curves, on 1 and 2 ranks (the reader broadcasts).
+flowform_unit_test(MeshTest unit/MeshTest.cpp)
+flowform_unit_test(MeshTest unit/MeshTest.cpp NP 2)
+target_compile_definitions(MeshTest PRIVATE
+  FLOWFORM_TEST_DATA="${FLOWFORM_TEST_DATA}"
+  FLOWFORM_MESH_DIR="${FLOWFORM_SOURCE_DIR}/meshes")
