@@ -74,7 +74,7 @@ BoundaryCurve buildBoundaryCurve(const Mesh& mesh, const BoundaryGroup& group) {
   if (group.edges.empty()) throw InputError(where(mesh, group) + " has no edges");
   const std::vector<std::array<GO, 2>> edges = directedEdges(mesh, group);
 
-  std::map<GO, GO> next;        // node -> the node its outgoing edge leads to
+  std::map<GO, GO> next;  // node -> the node its outgoing edge leads to
   std::map<GO, int> inDegree;
   auto branchesAt = [&](GO node) {
     return InputError(where(mesh, group) + " branches at " + nodeLabel(mesh, node) +
@@ -82,7 +82,7 @@ BoundaryCurve buildBoundaryCurve(const Mesh& mesh, const BoundaryGroup& group) {
   };
   for (const auto& e : edges) {
     if (!next.emplace(e[0], e[1]).second) throw branchesAt(e[0]);  // two edges leave e[0]
-    if (++inDegree[e[1]] > 1) throw branchesAt(e[1]);             // two edges reach e[1]
+    if (++inDegree[e[1]] > 1) throw branchesAt(e[1]);              // two edges reach e[1]
   }
   // An open chain starts at the one node without an incoming edge; a closed one at its
   // lowest node id (std::map order), so the start is reproducible.
@@ -99,13 +99,15 @@ BoundaryCurve buildBoundaryCurve(const Mesh& mesh, const BoundaryGroup& group) {
   curve.closed = starts.empty();
   const GO first = curve.closed ? next.begin()->first : starts.front();
   curve.nodes.push_back(first);
-  for (auto it = next.find(first); it != next.end() && it->second != first; it = next.find(it->second))
+  for (auto it = next.find(first); it != next.end() && it->second != first;
+       it = next.find(it->second))
     curve.nodes.push_back(it->second);
   const std::size_t numSegments = curve.closed ? curve.nodes.size() : curve.nodes.size() - 1;
   if (numSegments != edges.size())
     throw InputError(where(mesh, group) + " is made of several separate pieces (the chain from " +
                      nodeLabel(mesh, first) + " holds " + std::to_string(numSegments) + " of its " +
-                     std::to_string(edges.size()) + " edges); a boundary group must be one chain of edges");
+                     std::to_string(edges.size()) +
+                     " edges); a boundary group must be one chain of edges");
 
   curve.arcLength.push_back(0.0);
   for (std::size_t k = 0; k < numSegments; ++k) {

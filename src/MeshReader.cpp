@@ -4,6 +4,10 @@
 // no rank is left waiting in a collective when rank 0 fails.
 #include "flowform/MeshReader.hpp"
 
+#include <gmsh.h>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -13,11 +17,6 @@
 #include <set>
 #include <sstream>
 #include <unordered_map>
-
-#include <gmsh.h>
-
-#include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/InputError.hpp"
 
@@ -58,7 +57,8 @@ ReadOptions parseOptions(const Teuchos::ParameterList& given, const std::string&
   if (path.is_relative() && !baseDir.empty()) path = std::filesystem::path(baseDir) / path;
   opt.path = path.lexically_normal().string();
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char ch) { return std::tolower(ch); });
   if (ext != ".msh" && ext != ".geo")
     throw InputError("mesh file '" + opt.path + "' (Mesh/File): unknown extension '" + ext +
                      "'; flowform reads gmsh .msh and .geo files");
@@ -80,11 +80,12 @@ ReadOptions parseOptions(const Teuchos::ParameterList& given, const std::string&
   }
   // Options that only shape meshing would be silently ignored for a ready-made .msh.
   if (!opt.isGeo && !opt.geoParameters.empty())
-    throw InputError("Mesh/Geo Parameters is set but '" + opt.path + "' is a .msh file; "
-                     "Geo Parameters only apply to .geo files");
+    throw InputError("Mesh/Geo Parameters is set but '" + opt.path +
+                     "' is a .msh file; Geo Parameters only apply to .geo files");
   if (!opt.isGeo && opt.sizeFactor != 1.0)
-    throw InputError("Mesh/Size Factor is set but '" + opt.path + "' is a .msh file; "
-                     "Size Factor only applies to .geo files (use Uniform Refinements)");
+    throw InputError("Mesh/Size Factor is set but '" + opt.path +
+                     "' is a .msh file; Size Factor only applies to .geo files (use Uniform "
+                     "Refinements)");
   return opt;
 }
 
@@ -106,19 +107,18 @@ class GmshSession {
   GmshSession& operator=(const GmshSession&) = delete;
 };
 
-/// Runs `step`, turning gmsh's exceptions (a std::string in 4.8) into InputError.
+/// Runs `step`, turning gmsh's exceptions (4.8 throws a std::string on errors, an int when
+/// not initialized) into InputError; C++ exceptions (our own InputError, or a bug) pass.
 template <class Step>
 void gmshStep(const std::string& path, const char* what, Step step) {
   std::string message;
   try {
     step();
     return;
-  } catch (const InputError&) {
+  } catch (const std::exception&) {
     throw;
   } catch (const std::string& e) {
     message = e;
-  } catch (const std::exception& e) {
-    message = e.what();
   } catch (...) {
   }
   std::string last;
@@ -229,11 +229,12 @@ RawCells collectCells(const ReadOptions& opt) {
     throw InputError("mesh file '" + opt.path + "' has no 2-D cells (triangles or quadrilaterals)");
   for (const auto& [type, count] : typeCount)
     if (type != kGmshTri3 && type != kGmshQuad4)
-      throw InputError("mesh file '" + opt.path + "' has " + found + "; flowform takes only "
-                       "first-order 3-node triangles or 4-node quadrilaterals");
+      throw InputError("mesh file '" + opt.path + "' has " + found +
+                       "; flowform takes only first-order 3-node triangles or 4-node "
+                       "quadrilaterals");
   if (typeCount.size() > 1)
-    throw InputError("mesh file '" + opt.path + "' mixes cell types (" + found + "); flowform "
-                     "takes one type per mesh" +
+    throw InputError("mesh file '" + opt.path + "' mixes cell types (" + found +
+                     "); flowform takes one type per mesh" +
                      (opt.isGeo && opt.cellType == CellType::Quadrilateral4
                           ? std::string(" (gmsh could not recombine every triangle: make the "
                                         "number of boundary segments of each surface even, or "
@@ -320,7 +321,8 @@ void orientCells(Mesh& mesh, const RawCells& raw) {
                          std::to_string(majority > 0 ? ccw : cells.size() - ccw) + " of the " +
                          std::to_string(cells.size()) + " cells of gmsh surface " +
                          std::to_string(surface) + " are " + orientationName(majority));
-      if (majority < 0) std::reverse(mesh.cellNodes.begin() + c * npc + 1, mesh.cellNodes.begin() + (c + 1) * npc);
+      if (majority < 0)
+        std::reverse(mesh.cellNodes.begin() + c * npc + 1, mesh.cellNodes.begin() + (c + 1) * npc);
     }
   }
 }
@@ -341,18 +343,25 @@ Mesh extractMesh(const ReadOptions& opt) {
   std::vector<double> xyz, param;
   gmsh::model::mesh::getNodes(allTags, xyz, param, -1, -1, false, false);
   mesh.coords.resize(used.size());
+  std::vector<char> placed(used.size(), 0);
   double zMin = std::numeric_limits<double>::max(), zMax = -zMin, extent = 0;
   for (std::size_t k = 0; k < allTags.size(); ++k) {
     auto it = idOfTag.find(allTags[k]);
     if (it == idOfTag.end()) continue;
     mesh.coords[it->second] = {xyz[3 * k], xyz[3 * k + 1]};
+    placed[it->second] = 1;
     zMin = std::min(zMin, xyz[3 * k + 2]);
     zMax = std::max(zMax, xyz[3 * k + 2]);
     extent = std::max({extent, std::abs(xyz[3 * k]), std::abs(xyz[3 * k + 1])});
   }
+  for (std::size_t i = 0; i < used.size(); ++i)
+    if (!placed[i])
+      throw InputError("mesh file '" + opt.path + "': a cell uses node " + std::to_string(used[i]) +
+                       ", which the file does not define");
   if (zMax - zMin > 1e-10 * std::max(extent, 1.0))
     throw InputError("mesh file '" + opt.path + "' is not planar: node z ranges over [" +
-                     std::to_string(zMin) + ", " + std::to_string(zMax) + "]; flowform meshes lie in the x-y plane");
+                     std::to_string(zMin) + ", " + std::to_string(zMax) +
+                     "]; flowform meshes lie in the x-y plane");
   mesh.cellNodes.reserve(raw.nodeTags.size());
   for (std::size_t tag : raw.nodeTags) mesh.cellNodes.push_back(idOfTag.at(tag));
   orientCells(mesh, raw);
@@ -365,12 +374,14 @@ Mesh extractMesh(const ReadOptions& opt) {
     gmsh::model::getEntitiesForPhysicalGroup(2, g.second, surfaces);
     for (int s : surfaces) {
       auto it = raw.cellsOfEntity.find(s);
-      if (it != raw.cellsOfEntity.end()) region.cells.insert(region.cells.end(), it->second.begin(), it->second.end());
+      if (it != raw.cellsOfEntity.end())
+        region.cells.insert(region.cells.end(), it->second.begin(), it->second.end());
     }
     std::sort(region.cells.begin(), region.cells.end());
     for (const RegionGroup& r : mesh.regions)
       if (r.name == region.name)
-        throw InputError("mesh file '" + opt.path + "' has two 2-D physical groups named '" + r.name + "'");
+        throw InputError("mesh file '" + opt.path + "' has two 2-D physical groups named '" +
+                         r.name + "'");
     mesh.regions.push_back(std::move(region));
   }
 
@@ -378,7 +389,8 @@ Mesh extractMesh(const ReadOptions& opt) {
   for (const auto& g : groups) {
     BoundaryGroup boundary{groupName(1, g.second), {}};
     if (mesh.hasBoundary(boundary.name))
-      throw InputError("mesh file '" + opt.path + "' has two 1-D physical groups named '" + boundary.name + "'");
+      throw InputError("mesh file '" + opt.path + "' has two 1-D physical groups named '" +
+                       boundary.name + "'");
     std::vector<int> curves;
     gmsh::model::getEntitiesForPhysicalGroup(1, g.second, curves);
     for (int curve : curves) {
@@ -387,16 +399,18 @@ Mesh extractMesh(const ReadOptions& opt) {
       gmsh::model::mesh::getElements(types, elemTags, nodeTags, 1, curve);
       for (std::size_t k = 0; k < types.size(); ++k) {
         if (types[k] != kGmshLine2)
-          throw InputError("boundary group '" + boundary.name + "' in mesh file '" + opt.path + "' has " +
-                           elementName(types[k]) + " elements; flowform takes only 2-node lines");
+          throw InputError("boundary group '" + boundary.name + "' in mesh file '" + opt.path +
+                           "' has " + elementName(types[k]) +
+                           " elements; flowform takes only 2-node lines");
         for (std::size_t e = 0; e < elemTags[k].size(); ++e) {
           std::array<GO, 2> edge{};
           for (int i = 0; i < 2; ++i) {
             auto it = idOfTag.find(nodeTags[k][2 * e + i]);
             if (it == idOfTag.end())
               throw InputError("boundary group '" + boundary.name + "' in mesh file '" + opt.path +
-                               "': edge (gmsh element " + std::to_string(elemTags[k][e]) + ") has node " +
-                               std::to_string(nodeTags[k][2 * e + i]) + ", which is not a node of any 2-D cell");
+                               "': edge (gmsh element " + std::to_string(elemTags[k][e]) +
+                               ") has node " + std::to_string(nodeTags[k][2 * e + i]) +
+                               ", which is not a node of any 2-D cell");
             edge[i] = it->second;
           }
           boundary.edges.push_back(edge);
@@ -424,7 +438,9 @@ Mesh readOnRoot(const ReadOptions& opt) {
 class Packer {
  public:
   template <class T>
-  void put(const T& value) { putRaw(&value, sizeof(T)); }
+  void put(const T& value) {
+    putRaw(&value, sizeof(T));
+  }
   template <class T>
   void putVector(const std::vector<T>& v) {
     put<std::uint64_t>(v.size());
@@ -444,14 +460,21 @@ class Unpacker {
  public:
   explicit Unpacker(const std::vector<char>& bytes) : m_bytes(bytes) {}
   template <class T>
-  T get() { T value; getRaw(&value, sizeof(T)); return value; }
+  T get() {
+    T value;
+    getRaw(&value, sizeof(T));
+    return value;
+  }
   template <class T>
   std::vector<T> getVector() {
     std::vector<T> v(get<std::uint64_t>());
     getRaw(v.data(), v.size() * sizeof(T));
     return v;
   }
-  std::string getString() { auto v = getVector<char>(); return std::string(v.begin(), v.end()); }
+  std::string getString() {
+    auto v = getVector<char>();
+    return std::string(v.begin(), v.end());
+  }
 
  private:
   void getRaw(void* p, std::size_t n) {
@@ -471,9 +494,15 @@ void packMesh(Packer& p, const Mesh& mesh) {
   p.putVector(mesh.coords);
   p.putVector(mesh.cellNodes);
   p.put<std::uint64_t>(mesh.boundaries.size());
-  for (const BoundaryGroup& g : mesh.boundaries) { p.putString(g.name); p.putVector(g.edges); }
+  for (const BoundaryGroup& g : mesh.boundaries) {
+    p.putString(g.name);
+    p.putVector(g.edges);
+  }
   p.put<std::uint64_t>(mesh.regions.size());
-  for (const RegionGroup& g : mesh.regions) { p.putString(g.name); p.putVector(g.cells); }
+  for (const RegionGroup& g : mesh.regions) {
+    p.putString(g.name);
+    p.putVector(g.cells);
+  }
 }
 
 Mesh unpackMesh(Unpacker& u) {
@@ -483,9 +512,15 @@ Mesh unpackMesh(Unpacker& u) {
   mesh.coords = u.getVector<std::array<double, 2>>();
   mesh.cellNodes = u.getVector<GO>();
   mesh.boundaries.resize(u.get<std::uint64_t>());
-  for (BoundaryGroup& g : mesh.boundaries) { g.name = u.getString(); g.edges = u.getVector<std::array<GO, 2>>(); }
+  for (BoundaryGroup& g : mesh.boundaries) {
+    g.name = u.getString();
+    g.edges = u.getVector<std::array<GO, 2>>();
+  }
   mesh.regions.resize(u.get<std::uint64_t>());
-  for (RegionGroup& g : mesh.regions) { g.name = u.getString(); g.cells = u.getVector<GO>(); }
+  for (RegionGroup& g : mesh.regions) {
+    g.name = u.getString();
+    g.cells = u.getVector<GO>();
+  }
   return mesh;
 }
 
@@ -519,9 +554,10 @@ Teuchos::RCP<const Teuchos::ParameterList> validMeshParameters() {
           "transfinite curves. Must stay 1 for a .msh.",
           Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(
               std::numeric_limits<double>::min(), std::numeric_limits<double>::max())));
-  pl->set("Uniform Refinements", 0,
-          "Times every cell is split into 4 (gmsh::model::mesh::refine) after reading or meshing.",
-          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, std::numeric_limits<int>::max())));
+  pl->set(
+      "Uniform Refinements", 0,
+      "Times every cell is split into 4 (gmsh::model::mesh::refine) after reading or meshing.",
+      Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, std::numeric_limits<int>::max())));
   pl->set("Verbose", false, "Let gmsh print its log on rank 0.");
   Teuchos::ParameterList& geo = pl->sublist(
       "Geo Parameters", false,

@@ -7,12 +7,12 @@
 // quadrilaterals alike.
 #include "flowform/Partition.hpp"
 
+#include <metis.h>
+
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
-
-#include <metis.h>
 
 #include "flowform/InputError.hpp"
 
@@ -82,9 +82,9 @@ std::vector<int> partitionCells(const Mesh& mesh, int numParts) {
   options[METIS_OPTION_NUMBERING] = 0;
   options[METIS_OPTION_SEED] = 1;  // fixed: every rank must compute the same partition
   std::vector<idx_t> part(numCells, 0);
-  const int status = METIS_PartGraphKway(&nvtxs, &ncon, xadj.data(), adjncy.data(), nullptr,
-                                         nullptr, nullptr, &nparts, nullptr, nullptr, options,
-                                         &objval, part.data());
+  const int status =
+      METIS_PartGraphKway(&nvtxs, &ncon, xadj.data(), adjncy.data(), nullptr, nullptr, nullptr,
+                          &nparts, nullptr, nullptr, options, &objval, part.data());
   if (status != METIS_OK)
     throw std::runtime_error("partitionCells: METIS_PartGraphKway failed (status " +
                              std::to_string(status) + ") for mesh '" + mesh.source + "'");

@@ -225,7 +225,7 @@ void Simulation::writeOutput(const std::string& outDir) const {
     for (const auto& group : m_mesh.boundaries) {
       try {
         writeBoundaryCsv(outDir, m_mesh, buildBoundaryCurve(m_mesh, group), fields);
-      } catch (const InputError& e) {
+      } catch (const std::exception& e) {  // a group that is not one simple curve, or an odd name
         log() << "flowform: no CSV for boundary group '" << group.name << "': " << e.what() << "\n";
       }
     }

@@ -6,13 +6,12 @@
 // 5-8 midsides of bottom/right/top/left, 9 the centre, 10 an unused geometry point at
 // (2,2)); reader ids are tag - 1. Physical curves bottom/right/top/left (bottom's edges
 // listed out of order and against the curve), physical surface "body". Cell tags from 101.
-#include <algorithm>
-#include <cmath>
-#include <string>
-
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
+#include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "flowform/BoundaryCurve.hpp"
 #include "flowform/InputError.hpp"
@@ -59,7 +58,9 @@ std::string inputError(F f) {
   return "<no InputError thrown>";
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
 
 double signedArea(const Mesh& mesh, GO c) {
   const int npc = flowform::nodesPerCell(mesh.cellType);
@@ -145,7 +146,8 @@ TEUCHOS_UNIT_TEST(MeshReader, ChannelGeoBothTypes) {
   TEST_EQUALITY(quad0.numCells(), 32);
   TEST_EQUALITY(quad0.numNodes(), 45);
   // gmsh places transfinite nodes to ~1e-12 only
-  for (GO c = 0; c < quad0.numCells(); ++c) TEST_FLOATING_EQUALITY(signedArea(quad0, c), 0.25, 1e-10);
+  for (GO c = 0; c < quad0.numCells(); ++c)
+    TEST_FLOATING_EQUALITY(signedArea(quad0, c), 0.25, 1e-10);
   const Mesh quad1 = readChannel("Quadrilateral", 1);
   TEST_EQUALITY(quad1.numCells(), 128);
   TEST_EQUALITY(quad1.numNodes(), 153);
@@ -164,11 +166,22 @@ TEUCHOS_UNIT_TEST(MeshReader, GeoParameterReachesDefineConstant) {
   TEST_EQUALITY(readChannel("Triangle", 0).numCells(), 64);  // N does not leak into the next read
   Teuchos::ParameterList p = meshList("channel.geo");
   p.sublist("Geo Parameters").set("Bogus", 3.0);
-  const std::string msg = inputError([&] {
-    flowform::readMesh(p, FLOWFORM_MESH_DIR, *Teuchos::DefaultComm<int>::getComm());
-  });
+  const std::string msg = inputError(
+      [&] { flowform::readMesh(p, FLOWFORM_MESH_DIR, *Teuchos::DefaultComm<int>::getComm()); });
   out << msg << "\n";
   TEST_ASSERT(contains(msg, "Geo Parameters/Bogus") && contains(msg, "it defines: N"));
+}
+
+TEUCHOS_UNIT_TEST(MeshReader, ValidParametersAcceptAnyGeoParameterName) {
+  // As the driver embeds it: Geo Parameters' names belong to the .geo, not to flowform.
+  Teuchos::ParameterList valid("Case"), user("Case");
+  valid.set("Mesh", *flowform::validMeshParameters());
+  user.sublist("Mesh").set("File", std::string("channel.geo"));
+  user.sublist("Mesh").sublist("Geo Parameters").set("N", 8.0);
+  TEST_NOTHROW(user.validateParametersAndSetDefaults(valid));
+  TEST_EQUALITY(user.sublist("Mesh").get<int>("Uniform Refinements"), 0);
+  user.sublist("Mesh").set("Uniform Refinement", 1);  // misspelt
+  TEST_THROW(user.validateParametersAndSetDefaults(valid), std::exception);
 }
 
 TEUCHOS_UNIT_TEST(MeshReader, InputErrorsNameTheCulprit) {
@@ -179,7 +192,8 @@ TEUCHOS_UNIT_TEST(MeshReader, InputErrorsNameTheCulprit) {
       {"no_such_mesh.msh", "Triangle", "no_such_mesh.msh' (Mesh/File) does not exist", "data"},
       {"unit_square_flipped.msh", "Triangle", "inverted cell 3 (gmsh element 104", "7 of the 8"},
       {"unit_square_bowtie.msh", "Quadrilateral", "inverted cell 1 (gmsh element 102", "bow-tie"},
-      {"unit_square_degenerate.msh", "Triangle", "degenerate cell 2 (gmsh element 103", "unit_square_degenerate.msh"},
+      {"unit_square_degenerate.msh", "Triangle", "degenerate cell 2 (gmsh element 103",
+       "unit_square_degenerate.msh"},
       {"unit_square_mixed.msh", "Triangle", "mixes cell types", "unit_square_mixed.msh"},
       {"unit_square_tri.msh", "Quadrilateral", "Element Type is 'Quadrilateral'", "8 x Triangle 3"},
       {"broken.geo", "Triangle", "broken.geo", "syntax error"},
@@ -234,7 +248,8 @@ TEUCHOS_UNIT_TEST(BoundaryCurve, CornerAndClosedLoop) {
   TEST_ASSERT(!c.isStraight());
 
   BoundaryGroup loop{"loop", {}};
-  for (const BoundaryGroup& g : mesh.boundaries) loop.edges.insert(loop.edges.end(), g.edges.begin(), g.edges.end());
+  for (const BoundaryGroup& g : mesh.boundaries)
+    loop.edges.insert(loop.edges.end(), g.edges.begin(), g.edges.end());
   const BoundaryCurve l = flowform::buildBoundaryCurve(mesh, loop);
   TEST_ASSERT(l.closed);
   TEST_EQUALITY(l.nodes.size(), 8u);
@@ -309,7 +324,8 @@ TEUCHOS_UNIT_TEST(Partition, TwoPartsCoverTheMesh) {
   const std::vector<int> owner = flowform::nodeOwners(mesh, part);
   std::vector<int> lowest(mesh.numNodes(), 2);
   for (GO c = 0; c < mesh.numCells(); ++c)
-    for (int i = 0; i < 3; ++i) lowest[mesh.cell(c)[i]] = std::min(lowest[mesh.cell(c)[i]], part[c]);
+    for (int i = 0; i < 3; ++i)
+      lowest[mesh.cell(c)[i]] = std::min(lowest[mesh.cell(c)[i]], part[c]);
   TEST_COMPARE_ARRAYS(owner, lowest);
 
   const Mesh quads = readChannel("Quadrilateral", 0);

@@ -18,12 +18,12 @@ constexpr int kMaxQuadraturePoints = 4;
 struct CellQuadrature {
   int numNodes = 0;
   int numPoints = 0;
-  double N[kMaxQuadraturePoints][kMaxNodesPerCell];
-  double dNdx[kMaxQuadraturePoints][kMaxNodesPerCell];
-  double dNdy[kMaxQuadraturePoints][kMaxNodesPerCell];
-  double x[kMaxQuadraturePoints];  ///< physical coordinates of the points
-  double y[kMaxQuadraturePoints];
-  double weight[kMaxQuadraturePoints];
+  double N[kMaxQuadraturePoints][kMaxNodesPerCell] = {};
+  double dNdx[kMaxQuadraturePoints][kMaxNodesPerCell] = {};
+  double dNdy[kMaxQuadraturePoints][kMaxNodesPerCell] = {};
+  double x[kMaxQuadraturePoints] = {};  ///< physical coordinates of the points
+  double y[kMaxQuadraturePoints] = {};
+  double weight[kMaxQuadraturePoints] = {};
   double area = 0.0;
 };
 

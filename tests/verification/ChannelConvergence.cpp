@@ -1,0 +1,180 @@
+// Channel verification (SPEC §6.1): L2 errors of velocity and pressure against the exact
+// fully developed solution on successive refinements, and the observed orders.
+//
+//   ChannelConvergence --check            ctest: asserts the orders (see kExpected* below)
+//   ChannelConvergence --table [--max-n N] the full convergence table (docs/verification.md)
+//   ChannelConvergence --beta             errors vs the stabilization factor β
+//   ChannelConvergence --cutoff           errors vs the strain-rate cutoff e0 (σ0 > 0)
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <Tpetra_Core.hpp>
+
+#include "ChannelExact.hpp"
+#include "flowform/Log.hpp"
+#include "flowform/Simulation.hpp"
+#include "flowform/kernels/ShapeFunctions.hpp"
+
+using namespace flowform;
+using verification::ChannelExact;
+
+namespace {
+
+struct Material { double sigma0, n; };
+struct Errors { double velocity, pressure; int dofs; bool converged; double seconds; };
+
+/// Gauss–Legendre points and weights on [0, 1].
+void gauss01(int m, std::vector<double>& x, std::vector<double>& w) {
+  static const double p4[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+  static const double w4[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  x.resize(m); w.resize(m);
+  for (int i = 0; i < m; ++i) { x[i] = 0.5 * (p4[i] + 1.0); w[i] = 0.5 * w4[i]; }
+}
+
+/// Relative L2 errors ||u_h − u|| / ||u||, ||p_h − p|| / ||p||, integrated with 4×4 Gauss
+/// per cell (collapsed onto triangles): exact to machine precision for the interpolated
+/// fields and accurate to far below the discretization error for the exact ones.
+Errors l2Errors(const Simulation& sim, const ChannelExact& exact) {
+  const Mesh& mesh = sim.mesh();
+  const FieldSet fields = sim.gatherFields();
+  const auto& u = fields.nodal[0].values;
+  const auto& p = fields.nodal[1].values;
+  std::vector<double> g, gw;
+  gauss01(4, g, gw);
+  const int npc = nodesPerCell(mesh.cellType);
+  double eu = 0, nu = 0, ep = 0, np = 0;
+  for (GO c = 0; c < mesh.numCells(); ++c) {
+    std::array<double, 2> xy[4];
+    for (int a = 0; a < npc; ++a) xy[a] = mesh.coords[mesh.cell(c)[a]];
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        double xi, eta, wref;
+        if (mesh.cellType == CellType::Triangle3) {  // Duffy: (s, t) ∈ [0,1]² → (s, t(1−s))
+          xi = g[i]; eta = g[j] * (1.0 - g[i]); wref = gw[i] * gw[j] * (1.0 - g[i]);
+        } else {
+          xi = 2.0 * g[i] - 1.0; eta = 2.0 * g[j] - 1.0; wref = 4.0 * gw[i] * gw[j];
+        }
+        double N[4], dxi[4], deta[4];
+        referenceShape(mesh.cellType, xi, eta, N, dxi, deta);
+        double x = 0, y = 0, J00 = 0, J01 = 0, J10 = 0, J11 = 0, uh = 0, vh = 0, ph = 0;
+        for (int a = 0; a < npc; ++a) {
+          const GO node = mesh.cell(c)[a];
+          x += N[a] * xy[a][0]; y += N[a] * xy[a][1];
+          J00 += dxi[a] * xy[a][0]; J01 += dxi[a] * xy[a][1];
+          J10 += deta[a] * xy[a][0]; J11 += deta[a] * xy[a][1];
+          uh += N[a] * u[2 * node]; vh += N[a] * u[2 * node + 1]; ph += N[a] * p[node];
+        }
+        const double w = wref * (J00 * J11 - J01 * J10);
+        const double ue = exact.velocity(y), pe = exact.pressure(x);
+        eu += w * ((uh - ue) * (uh - ue) + vh * vh);
+        nu += w * ue * ue;
+        ep += w * (ph - pe) * (ph - pe);
+        np += w * pe * pe;
+      }
+  }
+  return {std::sqrt(eu / nu), std::sqrt(ep / np), 0, true, 0.0};
+}
+
+Teuchos::RCP<Teuchos::ParameterList> channelCase() {
+  auto params = Teuchos::getParametersFromXmlFile(std::string(FLOWFORM_SOURCE_DIR) + "/xml/channel.xml");
+  params->sublist("Mesh").set("File", std::string(FLOWFORM_SOURCE_DIR) + "/meshes/channel.geo");
+  return params;
+}
+
+Errors solve(const std::string& cellType, int N, Material m, double beta, double cutoff,
+             const Teuchos::RCP<const Comm>& comm) {
+  auto params = channelCase();
+  params->sublist("Mesh").set("Element Type", cellType);
+  params->sublist("Mesh").sublist("Geo Parameters").set("N", double(N));
+  params->sublist("Material").set("Yield Stress", m.sigma0);
+  params->sublist("Material").set("Rate Exponent", m.n);
+  params->sublist("Material").set("Strain Rate Cutoff", cutoff);
+  params->sublist("Stabilization").set("Beta", beta);
+  Simulation sim(*params, FLOWFORM_SOURCE_DIR, comm);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto& report = sim.run();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ChannelExact exact;
+  exact.sigma0 = m.sigma0;
+  exact.n = m.n;
+  Errors e = l2Errors(sim, exact);
+  e.dofs = static_cast<int>(sim.dofMap().ownedMap()->getGlobalNumElements());
+  e.converged = report.converged;
+  e.seconds = seconds;
+  return e;
+}
+
+const std::vector<Material> kMaterials = {{0.0, 1.0}, {0.0, 3.0}, {0.5, 5.0}};
+constexpr double kBeta = 0.1;
+constexpr double kCutoff = 1e-3;
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  Tpetra::ScopeGuard scope(&argc, &argv);
+  auto comm = Tpetra::getDefaultComm();
+  setLogEnabled(false);
+  std::string mode = argc > 1 ? argv[1] : "--check";
+  int maxN = 32;
+  for (int i = 2; i + 1 < argc; ++i)
+    if (std::string(argv[i]) == "--max-n") maxN = std::stoi(argv[i + 1]);
+
+  if (mode == "--beta") {
+    std::printf("%-13s %4s %8s %12s %12s\n", "element", "N", "beta", "err_u", "err_p");
+    for (const char* type : {"Triangle", "Quadrilateral"})
+      for (int N : {16, 32})
+        for (double beta : {0.01, 0.03, 0.1, 0.3, 1.0}) {
+          const Errors e = solve(type, N, {0.0, 3.0}, beta, kCutoff, comm);
+          std::printf("%-13s %4d %8.3g %12.4e %12.4e\n", type, N, beta, e.velocity, e.pressure);
+        }
+    return 0;
+  }
+  if (mode == "--cutoff") {
+    std::printf("%-13s %4s %8s %12s %12s %4s\n", "element", "N", "e0", "err_u", "err_p", "conv");
+    for (const char* type : {"Triangle", "Quadrilateral"})
+      for (double e0 : {1e-1, 1e-2, 1e-3, 1e-4})
+        for (int N : {16, 64}) {
+          const Errors e = solve(type, N, {0.5, 5.0}, kBeta, e0, comm);
+          std::printf("%-13s %4d %8.0e %12.4e %12.4e %4d\n", type, N, e0, e.velocity, e.pressure, e.converged);
+        }
+    return 0;
+  }
+
+  // Convergence table; --check asserts the observed orders on the finest pair.
+  // Expected (docs/verification.md): velocity L2 order 2 (P1 and Q1 interpolation error
+  // O(h²)); pressure L2 order >= 1 (stabilized equal-order theory: O(h) for the pressure).
+  // The asserted bounds leave 0.2 below the theory for pre-asymptotic meshes: the measured
+  // orders (docs/verification.md) are within 0.1 of the finest-pair values quoted there.
+  const double kExpectedVelocityOrder = 1.8, kExpectedPressureOrder = 0.9;
+  bool ok = true;
+  std::printf("%-13s %5s %3s %4s %7s %12s %6s %12s %6s %8s\n", "element", "sigma0", "n", "N", "dofs", "err_u",
+              "order", "err_p", "order", "seconds");
+  for (const char* type : {"Triangle", "Quadrilateral"})
+    for (const Material& m : kMaterials) {
+      Errors previous{0, 0, 0, true, 0};
+      for (int N = 4; N <= maxN; N *= 2) {
+        const Errors e = solve(type, N, m, kBeta, kCutoff, comm);
+        double ou = 0, op = 0;
+        if (N > 4) {
+          ou = std::log2(previous.velocity / e.velocity);
+          op = std::log2(previous.pressure / e.pressure);
+        }
+        std::printf("%-13s %5.2f %3.0f %4d %7d %12.4e %6.2f %12.4e %6.2f %8.3f%s\n", type, m.sigma0, m.n, N, e.dofs,
+                    e.velocity, ou, e.pressure, op, e.seconds, e.converged ? "" : "  NOT CONVERGED");
+        if (!e.converged) ok = false;
+        if (N == maxN && N > 4) {
+          // For σ0 > 0 the cutoff e0 = 1e-3 bounds the attainable error (see --cutoff):
+          // the velocity order is asserted only while the error is above that floor.
+          if (ou < kExpectedVelocityOrder && m.sigma0 == 0.0) ok = false;
+          if (op < kExpectedPressureOrder) ok = false;
+        }
+        previous = e;
+      }
+    }
+  std::printf(ok ? "channel convergence: PASSED\n" : "channel convergence: FAILED\n");
+  return ok ? 0 : 1;
+}
