@@ -5,6 +5,7 @@
 //   ChannelConvergence --table [--max-n N] the full convergence table (docs/verification.md)
 //   ChannelConvergence --beta             errors vs the stabilization factor β
 //   ChannelConvergence --cutoff           errors vs the strain-rate cutoff e0 (σ0 > 0)
+//   ... --pipe                            the same for the axisymmetric pipe (pipe_axisym.xml)
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -68,7 +69,13 @@ Errors l2Errors(const Simulation& sim, const ChannelExact& exact) {
           J10 += deta[a] * xy[a][0]; J11 += deta[a] * xy[a][1];
           uh += N[a] * u[2 * node]; vh += N[a] * u[2 * node + 1]; ph += N[a] * p[node];
         }
-        const double w = wref * (J00 * J11 - J01 * J10);
+        double w = wref * (J00 * J11 - J01 * J10);
+        if (exact.axisymmetric) {
+          // pipe: x = r is the radius, the flow runs along y = z, dΩ = 2π r dr dz
+          w *= 2.0 * M_PI * x;
+          std::swap(x, y);
+          std::swap(uh, vh);
+        }
         const double ue = exact.velocity(y), pe = exact.pressure(x);
         eu += w * ((uh - ue) * (uh - ue) + vh * vh);
         nu += w * ue * ue;
@@ -79,9 +86,13 @@ Errors l2Errors(const Simulation& sim, const ChannelExact& exact) {
   return {std::sqrt(eu / nu), std::sqrt(ep / np), 0, true, 0.0};
 }
 
+bool g_pipe = false;  ///< --pipe: the axisymmetric pipe (xml/pipe_axisym.xml) instead of the channel
+
 Teuchos::RCP<Teuchos::ParameterList> channelCase() {
-  auto params = Teuchos::getParametersFromXmlFile(std::string(FLOWFORM_SOURCE_DIR) + "/xml/channel.xml");
-  params->sublist("Mesh").set("File", std::string(FLOWFORM_SOURCE_DIR) + "/meshes/channel.geo");
+  const std::string name = g_pipe ? "pipe_axisym" : "channel";
+  const std::string mesh = g_pipe ? "pipe" : "channel";
+  auto params = Teuchos::getParametersFromXmlFile(std::string(FLOWFORM_SOURCE_DIR) + "/xml/" + name + ".xml");
+  params->sublist("Mesh").set("File", std::string(FLOWFORM_SOURCE_DIR) + "/meshes/" + mesh + ".geo");
   return params;
 }
 
@@ -99,6 +110,8 @@ Errors solve(const std::string& cellType, int N, Material m, double beta, double
   const auto& report = sim.run();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ChannelExact exact;
+  exact.axisymmetric = g_pipe;
+  if (g_pipe) { exact.G = 2.0; exact.pIn = 8.0; }  // xml/pipe_axisym.xml
   exact.sigma0 = m.sigma0;
   exact.n = m.n;
   Errors e = l2Errors(sim, exact);
@@ -120,8 +133,10 @@ int main(int argc, char* argv[]) {
   setLogEnabled(false);
   std::string mode = argc > 1 ? argv[1] : "--check";
   int maxN = 32;
-  for (int i = 2; i + 1 < argc; ++i)
-    if (std::string(argv[i]) == "--max-n") maxN = std::stoi(argv[i + 1]);
+  for (int i = 2; i < argc; ++i) {
+    if (std::string(argv[i]) == "--max-n" && i + 1 < argc) maxN = std::stoi(argv[i + 1]);
+    if (std::string(argv[i]) == "--pipe") g_pipe = true;
+  }
 
   if (mode == "--beta") {
     std::printf("%-13s %4s %8s %12s %12s\n", "element", "N", "beta", "err_u", "err_p");
@@ -149,7 +164,7 @@ int main(int argc, char* argv[]) {
   // O(h²)); pressure L2 order >= 1 (stabilized equal-order theory: O(h) for the pressure).
   // The asserted bounds leave 0.2 below the theory for pre-asymptotic meshes: the measured
   // orders (docs/verification.md) are within 0.1 of the finest-pair values quoted there.
-  const double kExpectedVelocityOrder = 1.8, kExpectedPressureOrder = 0.9;
+  const double kExpectedVelocityOrder = 1.8, kExpectedPressureOrder = 0.9, kMaxFinestError = 5e-2;
   bool ok = true;
   std::printf("%-13s %5s %3s %4s %7s %12s %6s %12s %6s %8s\n", "element", "sigma0", "n", "N", "dofs", "err_u",
               "order", "err_p", "order", "seconds");
@@ -167,10 +182,13 @@ int main(int argc, char* argv[]) {
                     e.velocity, ou, e.pressure, op, e.seconds, e.converged ? "" : "  NOT CONVERGED");
         if (!e.converged) ok = false;
         if (N == maxN && N > 4) {
-          // For σ0 > 0 the cutoff e0 = 1e-3 bounds the attainable error (see --cutoff):
-          // the velocity order is asserted only while the error is above that floor.
-          if (ou < kExpectedVelocityOrder && m.sigma0 == 0.0) ok = false;
+          // For σ0 > 0 the cutoff e0 = 1e-3 bounds the attainable error (see --cutoff); up to
+          // N = 64 the discretization error is still far above that floor.
+          if (ou < kExpectedVelocityOrder) ok = false;
           if (op < kExpectedPressureOrder) ok = false;
+          // And the errors must be small, not merely shrinking: at N >= 16 the measured
+          // errors are below 2e-2 (docs/verification.md); 5e-2 allows the coarser N = 16.
+          if (e.velocity > kMaxFinestError || e.pressure > kMaxFinestError) ok = false;
         }
         previous = e;
       }
