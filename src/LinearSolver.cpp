@@ -75,8 +75,9 @@ void LinearSolver::factor(const Teuchos::RCP<const CrsMatrix>& A) {
   auto serialComm = d.serialRowMap->getComm();
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   auto serialColMap = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(colGids), 0, serialComm));
-  d.serialMatrix = Teuchos::rcp(new CrsMatrix(d.serialRowMap, serialColMap, rootMatrix.getLocalMatrixDevice()));
-  d.serialMatrix->fillComplete(d.serialRowMap, d.serialRowMap);
+  // This constructor returns a fill-complete matrix.
+  d.serialMatrix = Teuchos::rcp(new CrsMatrix(rootMatrix.getLocalMatrixDevice(), d.serialRowMap, serialColMap,
+                                              d.serialRowMap, d.serialRowMap));
   // A new matrix object each time: KLU2 redoes its (cheap, AMD) ordering.
   d.solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", d.serialMatrix);
   d.solver->symbolicFactorization();
