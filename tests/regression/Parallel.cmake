@@ -1,0 +1,10 @@
+# A whole run on 2 ranks equals the serial run (nonlinear channel, both element types).
+set(FLOWFORM_PYTHON /usr/bin/python3)  # Debian's, where python3-h5py is installed
+foreach(cell Triangle Quadrilateral)
+  add_test(NAME parallel_equals_serial_${cell}
+           COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
+                   $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/channel.xml
+                   ${CMAKE_CURRENT_BINARY_DIR}/parallel_${cell}
+                   --set "Mesh/Element Type=${cell}" --set "Mesh/Geo Parameters/N=8")
+  set_tests_properties(parallel_equals_serial_${cell} PROPERTIES LABELS "regression")
+endforeach()
