@@ -1,0 +1,17 @@
+# What a run costs and reports, read from summary.json.
+set(FLOWFORM_PYTHON /usr/bin/python3)
+# A Newtonian case (n = 1, σ0 = 0) is linear: one factorization, one solve, no Newton.
+add_test(NAME newtonian_costs_one_solve
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_summary.py
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR}/xml/channel.xml ${CMAKE_CURRENT_BINARY_DIR}/newtonian
+                 --set "Material/Rate Exponent=1" --set "Material/Yield Stress=0"
+                 -- converged=true linear_problem=true newton_iterations=0
+                    linear_solver.factorizations=1 linear_solver.solves=1)
+set_tests_properties(newtonian_costs_one_solve PROPERTIES LABELS "regression")
+# n = 40 is reached by continuation (SPEC §6.3), and the result says how.
+add_test(NAME continuation_reaches_n40
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_summary.py
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR}/xml/channel.xml ${CMAKE_CURRENT_BINARY_DIR}/n40
+                 --set "Material/Rate Exponent=40" --set "Mesh/Geo Parameters/N=8"
+                 -- converged=true linear_problem=false parameters.Material.Rate\ Exponent=40.0)
+set_tests_properties(continuation_reaches_n40 PROPERTIES LABELS "regression")

@@ -1,0 +1,36 @@
+#!/usr/bin/python3
+"""Runs flowform and checks entries of summary.json.
+
+usage: check_summary.py FLOWFORM CASE.xml OUTDIR [--set P=V ...] -- KEY=VALUE ...
+KEY is a dotted path into summary.json (e.g. linear_solver.factorizations); VALUE is
+compared exactly (JSON literal: true, 1, "text"). The run must exit 0.
+"""
+import json
+import subprocess
+import sys
+
+
+def main():
+    sep = sys.argv.index("--")
+    flowform, case, outdir = sys.argv[1:4]
+    extra, checks = sys.argv[4:sep], sys.argv[sep + 1:]
+    status = subprocess.run([flowform, case, "-o", outdir, "--quiet"] + extra).returncode
+    if status != 0:
+        print(f"flowform exited {status}")
+        return 1
+    with open(f"{outdir}/summary.json") as f:
+        summary = json.load(f)
+    failed = False
+    for check in checks:
+        key, expected = check.split("=", 1)
+        value = summary
+        for part in key.split("."):
+            value = value[part]
+        ok = value == json.loads(expected)
+        print(f"{key} = {value!r} (expected {expected}) {'ok' if ok else 'MISMATCH'}")
+        failed |= not ok
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
