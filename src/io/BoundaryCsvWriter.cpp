@@ -4,6 +4,8 @@
 // nan/inf, which Python's float() and pandas read.
 #include "flowform/io/BoundaryCsvWriter.hpp"
 
+#include "flowform/io/AtomicFile.hpp"
+
 #include <array>
 #include <cerrno>
 #include <charconv>
@@ -135,24 +137,10 @@ void writeBoundaryCsv(const std::string& outDir, const Mesh& mesh, const Boundar
   // Through a temporary name, so a reader never sees a half-written table.
   const std::string path =
       (outDir.empty() ? std::string(".") : outDir) + "/boundary_" + curve.name + ".csv";
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out)
-      throw std::runtime_error("writeBoundaryCsv: cannot create '" + tmp + "': " +
-                               std::strerror(errno));
-    out << text;
-    out.close();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error("writeBoundaryCsv: cannot write '" + path + "'");
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    std::remove(tmp.c_str());
-    throw std::runtime_error("writeBoundaryCsv: cannot rename '" + tmp + "' to '" + path +
-                             "': " + std::strerror(err));
+  try {
+    writeFileAtomically(path, text);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("writeBoundaryCsv: ") + e.what());
   }
 }
 

@@ -1,6 +1,8 @@
 // JSON output helpers for summary.json (SPEC §5: the full parameter list goes in it).
 #include "flowform/io/JsonSummary.hpp"
 
+#include "flowform/io/AtomicFile.hpp"
+
 #include <Teuchos_Array.hpp>
 #include <Teuchos_ParameterList.hpp>
 
@@ -56,24 +58,10 @@ void writeJsonFile(const std::string& path, const nlohmann::json& j) {
   // Serialize before touching the disk: a failure here must leave no file behind.
   const std::string text =
       j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out)
-      throw std::runtime_error("writeJsonFile: cannot create '" + tmp + "': " +
-                               std::strerror(errno));
-    out << text;
-    out.close();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error("writeJsonFile: cannot write '" + path + "'");
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    std::remove(tmp.c_str());
-    throw std::runtime_error("writeJsonFile: cannot rename '" + tmp + "' to '" + path +
-                             "': " + std::strerror(err));
+  try {
+    writeFileAtomically(path, text);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("writeJsonFile: ") + e.what());
   }
 }
 
