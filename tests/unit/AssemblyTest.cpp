@@ -1,0 +1,616 @@
+// The assembled problem (Assembler + DofMap + BoundaryConditions), on 1 and 2 ranks:
+//  - patch test: at the nodal interpolant of a linear, divergence-free velocity with a
+//    linear pressure and the body force f = grad p that balances it, every row of an
+//    interior node vanishes (P1/Q1 on distorted meshes, plane strain and axisymmetric,
+//    Newtonian and nonlinear — constant D means constant μ);
+//  - exact solves: boundary-value problems whose exact solution is such a field (Couette
+//    shear, planar extension with symmetry lines, axisymmetric squeeze) are reproduced to
+//    round-off by Newton with the assembled Jacobian;
+//  - the assembled Jacobian against central differences of the assembled residual, with
+//    velocity, inclined-symmetry and traction conditions;
+//  - parallel = serial: on N ranks the residual and the Jacobian, gathered by global dof,
+//    equal those of the same case assembled on one rank (a split communicator).
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_UnitTestHarness.hpp>
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+
+#include "flowform/Assembler.hpp"
+#include "flowform/BoundaryConditions.hpp"
+#include "flowform/DofMap.hpp"
+#include "flowform/FlowModel.hpp"
+#include "flowform/Log.hpp"
+#include "flowform/Simulation.hpp"
+
+namespace {
+
+using namespace flowform;
+using Teuchos::ParameterList;
+using Teuchos::RCP;
+using Field = std::function<std::array<double, 3>(double, double)>;  // (x, y) -> (u_x, u_y, p)
+
+const MaterialParameters<double> kNewtonian{0.0, 1.0, 1.0, 1e-3};
+const MaterialParameters<double> kNonlinear{0.5, 1.0, 5.0, 1e-2};
+
+RCP<const Comm> worldComm() {
+  setLogEnabled(false);
+  return Teuchos::DefaultComm<int>::getComm();
+}
+
+double globalMax(const Comm& comm, double local) {
+  double global = local;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, local, Teuchos::outArg(global));
+  return global;
+}
+
+/// Deterministic value in [−1, 1] for grid point (i, j).
+double hash(int i, int j, double salt) {
+  const double s = std::sin(12.9898 * i + 78.233 * j + salt) * 43758.5453;
+  return 2.0 * (s - std::floor(s)) - 1.0;
+}
+
+/// Every cell has positive Jacobian determinants at its quadrature points.
+bool meshIsValid(const Mesh& mesh) {
+  const int npc = nodesPerCell(mesh.cellType);
+  for (GO c = 0; c < mesh.numCells(); ++c) {
+    std::array<double, 2> xy[kMaxNodesPerCell];
+    for (int a = 0; a < npc; ++a) xy[a] = mesh.coords[mesh.cell(c)[a]];
+    CellQuadrature cq;
+    if (!computeCellQuadrature(mesh.cellType, xy, 2, cq)) return false;
+  }
+  return true;
+}
+
+/// A structured nx × ny mesh of [x0, x0+Lx] × [y0, y0 + Ly(1 + slope ξ)] (ξ = (x−x0)/Lx:
+/// with a slope the top side is straight but inclined), interior nodes moved by up to
+/// `distortion` of a cell in each direction. Triangles split the cells along alternating
+/// diagonals. Boundary groups bottom, right, top, left.
+Mesh makeMesh(CellType type, int nx, int ny, double x0, double y0, double Lx, double Ly, double distortion,
+              double slope = 0.0) {
+  Mesh mesh;
+  mesh.source = "AssemblyTest mesh";
+  mesh.cellType = type;
+  auto id = [&](int i, int j) { return static_cast<GO>(j * (nx + 1) + i); };
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      double xi = double(i) / nx, eta = double(j) / ny;
+      if (i > 0 && i < nx && j > 0 && j < ny) {
+        xi += distortion / nx * hash(i, j, 0.1);
+        eta += distortion / ny * hash(i, j, 0.7);
+      }
+      mesh.coords.push_back({x0 + xi * Lx, y0 + eta * Ly * (1.0 + slope * xi)});
+    }
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const GO a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if (type == CellType::Quadrilateral4)
+        mesh.cellNodes.insert(mesh.cellNodes.end(), {a, b, c, d});
+      else if ((i + j) % 2 == 0)
+        mesh.cellNodes.insert(mesh.cellNodes.end(), {a, b, c, a, c, d});
+      else
+        mesh.cellNodes.insert(mesh.cellNodes.end(), {a, b, d, b, c, d});
+    }
+  BoundaryGroup bottom{"bottom", {}}, right{"right", {}}, top{"top", {}}, left{"left", {}};
+  for (int i = 0; i < nx; ++i) {
+    bottom.edges.push_back({id(i, 0), id(i + 1, 0)});
+    top.edges.push_back({id(i + 1, ny), id(i, ny)});
+  }
+  for (int j = 0; j < ny; ++j) {
+    right.edges.push_back({id(nx, j), id(nx, j + 1)});
+    left.edges.push_back({id(0, j + 1), id(0, j)});
+  }
+  mesh.boundaries = {bottom, right, top, left};
+  RegionGroup body{"body", {}};
+  for (GO c = 0; c < mesh.numCells(); ++c) body.cells.push_back(c);
+  mesh.regions = {body};
+  if (!meshIsValid(mesh)) throw std::logic_error("AssemblyTest: the generated mesh has an inverted cell");
+  return mesh;
+}
+
+/// Mesh, maps, conditions, assembler and model for one case (members refer to each other,
+/// so a Problem is never moved).
+struct Problem {
+  Mesh mesh;
+  std::unique_ptr<DofMap> dofMap;
+  std::unique_ptr<BoundaryConditions> bcs;
+  std::unique_ptr<Assembler> assembler;
+  std::unique_ptr<FlowModel> model;
+
+  Problem(Mesh m, const ParameterList& bcList, const FlowPhysics& physics, const RCP<const Comm>& comm)
+      : mesh(std::move(m)) {
+    dofMap = std::make_unique<DofMap>(mesh, comm);
+    bcs = std::make_unique<BoundaryConditions>(bcList, mesh, *dofMap);
+    assembler = std::make_unique<Assembler>(mesh, *dofMap, *bcs);
+    assembler->setPhysics(physics);
+    model = std::make_unique<FlowModel>(*assembler);
+  }
+  RCP<Vector> vector() const { return Teuchos::rcp(new Vector(dofMap->ownedMap())); }
+};
+
+FlowPhysics makePhysics(Geometry geometry, const MaterialParameters<double>& material, double beta, double fx,
+                        double fy) {
+  FlowPhysics p;
+  p.kernel.geometry = geometry;
+  p.kernel.beta = beta;
+  p.kernel.bodyForce[0] = fx;
+  p.kernel.bodyForce[1] = fy;
+  p.material = material;
+  return p;
+}
+
+/// One group of a "Boundary Conditions" list; only the entries given are set.
+struct Group {
+  std::string name, type;
+  std::map<std::string, double> values;
+};
+ParameterList bcList(const std::vector<Group>& groups) {
+  ParameterList list("Boundary Conditions");
+  for (const auto& g : groups) {
+    ParameterList& s = list.sublist(g.name);
+    s.set("Type", g.type);
+    for (const auto& [k, v] : g.values) s.set(k, v);
+  }
+  return list;
+}
+
+/// x ← the nodal values of `field` (owned dofs; dof gid = 3 node + component).
+void interpolate(const Mesh& mesh, const Field& field, Vector& x) {
+  auto v = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  const Map& map = *x.getMap();
+  for (size_t i = 0; i < x.getLocalLength(); ++i) {
+    const GO g = map.getGlobalElement(static_cast<LO>(i));
+    const auto& xy = mesh.coords[g / kDofsPerNode];
+    v(i, 0) = field(xy[0], xy[1])[g % kDofsPerNode];
+  }
+}
+
+std::set<GO> boundaryNodes(const Mesh& mesh) {
+  std::set<GO> nodes;
+  for (const auto& b : mesh.boundaries)
+    for (const auto& e : b.edges) nodes.insert(e.begin(), e.end());
+  return nodes;
+}
+
+std::string caseName(CellType type, Geometry geometry, const MaterialParameters<double>& m) {
+  return std::string(cellTypeName(type)) + (geometry == Geometry::PlaneStrain ? ", plane strain" : ", axisymmetric") +
+         (isNewtonian(m) ? ", Newtonian" : ", nonlinear");
+}
+
+/// μ(D:D) of the law, written out (pow form) for the tractions of the exact solutions.
+double viscosityOf(double ddot, const MaterialParameters<double>& m) {
+  const double er = std::sqrt(2.0 / 3.0 * ddot + m.cutoff * m.cutoff);
+  return (m.yieldStress + std::pow(er / m.rateConstant, 1.0 / m.rateExponent)) / (3.0 * er);
+}
+
+// ---------------------------------------------------------------------------------------
+// Patch test
+// ---------------------------------------------------------------------------------------
+
+// Round-off only: with the quadrature exact for these fields (P1: constant and linear
+// integrands on the centroid / 3-point rule; Q1: integrands of degree ≤ 3 per reference
+// direction for 2×2 Gauss, also axisymmetric where every term carries r), an interior
+// row is a sum of ≤ 8 cell contributions of size ≤ S (S = the largest boundary momentum
+// row, |σ| h) that cancel: ≈ 10 eps S ≈ 2e-15 S. Continuity rows are smaller still
+// (h²|grad u| ≤ h|σ| here). 1e-12 leaves a 500× margin; a missing term or a wrong
+// quadrature breaks the cancellation at O(h^k) ≈ 1e-3..1 of S.
+constexpr double kPatchTol = 1e-12;
+
+TEUCHOS_UNIT_TEST(Assembly, PatchTestInteriorResidualVanishes) {
+  const auto comm = worldComm();
+  // Plane strain: u = (a x + b y + c, d x − a y + e), p = p0 + px x + py y, f = grad p.
+  const double a = 0.4, b = -0.7, c = 0.2, d = 0.3, e = -0.5, p0 = 0.8, px = -0.6, py = 0.45;
+  const Field plane = [=](double x, double y) {
+    return std::array<double, 3>{a * x + b * y + c, d * x - a * y + e, p0 + px * x + py * y};
+  };
+  // Axisymmetric (x = r, y = z): u = (a r, −2a z + e), div u = a + a − 2a = 0, D constant
+  // with D_rr = D_θθ so the hoop term vanishes; p = p0 + pr r + pz z, f = grad p.
+  const Field axi = [=](double r, double z) {
+    return std::array<double, 3>{a * r, -2 * a * z + e, p0 + px * r + py * z};
+  };
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4})
+    for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric})
+      for (const auto& material : {kNewtonian, kNonlinear}) {
+        // Axisymmetric meshes touch the axis (x0 = 0); the inclined top tests general cells.
+        const Mesh mesh = makeMesh(type, 6, 5, 0.0, -0.5, 2.0, 1.0, 0.25, 0.3);
+        Problem problem(mesh, bcList({}), makePhysics(geometry, material, 0.1, px, py), comm);
+        auto x = problem.vector(), f = problem.vector();
+        interpolate(problem.mesh, geometry == Geometry::PlaneStrain ? plane : axi, *x);
+        problem.assembler->residual(*x, *f);
+
+        const auto onBoundary = boundaryNodes(problem.mesh);
+        auto fv = f->getLocalViewHost(Tpetra::Access::ReadOnly);
+        const Map& map = *f->getMap();
+        double boundaryMax = 0.0, interiorMax = 0.0;
+        for (size_t i = 0; i < f->getLocalLength(); ++i) {
+          const GO g = map.getGlobalElement(static_cast<LO>(i));
+          if (onBoundary.count(g / kDofsPerNode)) {
+            if (g % kDofsPerNode != kP) boundaryMax = std::max(boundaryMax, std::abs(fv(i, 0)));
+          } else {
+            interiorMax = std::max(interiorMax, std::abs(fv(i, 0)));
+          }
+        }
+        boundaryMax = globalMax(*comm, boundaryMax);
+        interiorMax = globalMax(*comm, interiorMax);
+        out << caseName(type, geometry, material) << ": max interior |F| = " << interiorMax
+            << ", max boundary momentum |F| = " << boundaryMax << "\n";
+        TEST_COMPARE(boundaryMax, >, 0.1);  // the scale is the field's, not round-off
+        TEST_COMPARE(interiorMax, <=, kPatchTol * boundaryMax);
+      }
+}
+
+// ---------------------------------------------------------------------------------------
+// Exact solves
+// ---------------------------------------------------------------------------------------
+
+/// Newton on the problem from x: x −= J⁻¹ F(x) until the step is below 1e-12 (round-off
+/// for dofs of size ~1). Returns the number of steps, or maxSteps + 1 if it did not stop.
+int newton(Problem& problem, Vector& x, int maxSteps) {
+  auto f = problem.vector(), dx = problem.vector();
+  for (int k = 1; k <= maxSteps; ++k) {
+    problem.model->residual(x, *f);
+    problem.model->computeJacobian(x);
+    problem.model->solve(*f, *dx);
+    x.update(-1.0, *dx, 1.0);
+    if (dx->normInf() <= 1e-12) return k;
+  }
+  return maxSteps + 1;
+}
+
+/// max |x − x_exact| over all dofs and ranks.
+double errorTo(const Problem& problem, const Vector& x, const Field& exact) {
+  auto xe = problem.vector();
+  interpolate(problem.mesh, exact, *xe);
+  xe->update(1.0, x, -1.0);
+  return xe->normInf();
+}
+
+/// A boundary-value problem whose exact solution is `exact` (in the discrete space).
+struct ExactCase {
+  std::string name;
+  Geometry geometry;
+  Field exact;
+  std::vector<Group> groups;
+  double rotation = 0.0;  ///< the mesh and the whole case turned by this angle about 0
+};
+
+/// `ec` turned by θ about the origin: u'(x) = R u(Rᵀx), p'(x) = p(Rᵀx); prescribed
+/// velocity vectors and tractions turn with it (a group must give both velocity
+/// components: one component alone is not a condition in the turned frame), symmetry
+/// lines turn with the mesh. Every side of the turned rectangle is inclined, so symmetry
+/// conditions act on both velocity components of a node.
+ExactCase turned(ExactCase ec, double theta) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  const Field ref = ec.exact;
+  ec.exact = [=](double x, double y) {
+    const auto v = ref(c * x + s * y, -s * x + c * y);
+    return std::array<double, 3>{c * v[0] - s * v[1], s * v[0] + c * v[1], v[2]};
+  };
+  for (auto& g : ec.groups) {
+    auto& v = g.values;
+    for (const std::string kind : {"Velocity", "Traction"}) {
+      const std::string X = kind + " X", Y = kind + " Y";
+      if (!v.count(X) && !v.count(Y)) continue;
+      if (kind == "Velocity" && !(v.count(X) && v.count(Y)))
+        throw std::logic_error("turned(): group '" + g.name + "' gives one velocity component only");
+      const double vx = v.count(X) ? v[X] : 0.0, vy = v.count(Y) ? v[Y] : 0.0;
+      v[X] = c * vx - s * vy;
+      v[Y] = s * vx + c * vy;
+    }
+  }
+  ec.name += " (turned)";
+  ec.rotation = theta;
+  return ec;
+}
+
+/// The exact cases for a material (their tractions depend on μ). On [0, 2] × [0, 1]:
+///   Couette: u = (b y + c, e), p = p0; walls y = 0, 1 move with the flow; the ends carry
+///     t = σ n, σ = [[−p0, μ b], [μ b, −p0]].
+///   Extension: u = (a x, −a y), p = p0; symmetry lines x = 0 and y = 0; u_y = −a on the
+///     top with zero shear traction; t = (2 μ a − p0, 0) on x = 2.
+///   Axisymmetric squeeze (x = r): u = (a r, −2a z + e), p = p0; axis r = 0 (symmetry);
+///     u_z = e on z = 0 with zero shear traction; t = (0, σ_zz) = (0, −4 μ a − p0) on z = 1
+///     (an edge along which r varies, so the 2π r weight of the traction integral is
+///     tested) and t = (2 μ a − p0, 0) on r = 2.
+///   Plane-strain cases turned by 30° (see turned()): Couette, and the extension with
+///     t = σ n = (0, −2 μ a − p0) on the top instead of the velocity.
+std::vector<ExactCase> exactCases(const MaterialParameters<double>& m) {
+  const double a = 0.6, b = 0.8, c = 0.3, e = -0.2, p0 = 0.7;
+  const double muShear = viscosityOf(2 * (b / 2) * (b / 2), m);  // D:D = 2 D_xy²
+  const double muExt = viscosityOf(2 * a * a, m);                // D_xx² + D_yy²
+  const double muAxi = viscosityOf(6 * a * a, m);                // a² + 4a² + a²
+  std::vector<ExactCase> cases = {
+      {"Couette", Geometry::PlaneStrain,
+       [=](double, double y) { return std::array<double, 3>{b * y + c, e, p0}; },
+       {{"bottom", "Velocity", {{"Velocity X", c}, {"Velocity Y", e}}},
+        {"top", "Velocity", {{"Velocity X", b + c}, {"Velocity Y", e}}},
+        {"left", "Traction", {{"Traction X", p0}, {"Traction Y", -muShear * b}}},
+        {"right", "Traction", {{"Traction X", -p0}, {"Traction Y", muShear * b}}}}},
+      {"extension", Geometry::PlaneStrain,
+       [=](double x, double y) { return std::array<double, 3>{a * x, -a * y, p0}; },
+       {{"left", "Symmetry", {}},
+        {"bottom", "Symmetry", {}},
+        {"top", "Velocity", {{"Velocity Y", -a}}},
+        {"right", "Traction", {{"Traction X", 2 * muExt * a - p0}}}}},
+      {"axisymmetric squeeze", Geometry::Axisymmetric,
+       [=](double r, double z) { return std::array<double, 3>{a * r, -2 * a * z + e, p0}; },
+       {{"left", "Symmetry", {}},
+        {"bottom", "Velocity", {{"Velocity Y", e}}},
+        {"top", "Traction", {{"Traction Y", -4 * muAxi * a - p0}}},
+        {"right", "Traction", {{"Traction X", 2 * muAxi * a - p0}}}}},
+  };
+  const double theta = M_PI / 6;
+  cases.push_back(turned(cases[0], theta));
+  ExactCase extension = cases[1];
+  extension.groups[2] = {"top", "Traction", {{"Traction Y", -2 * muExt * a - p0}}};
+  cases.push_back(turned(extension, theta));
+  return cases;
+}
+
+// The exact field is a discrete solution (patch test + exact boundary integrals of the
+// constant tractions), so the computed one differs from it only by the direct solver's
+// round-off, of order cond(J)·eps on dofs of size ≤ 1.6 (observed: ≤ 4e-15 on these
+// 162-dof systems). Tolerance 1e-10 allows cond(J) up to ~1e5 without a spurious
+// failure; a wrong traction, constraint or kernel term shows as an O(h..1) error.
+constexpr double kSolveTol = 1e-10;
+
+TEUCHOS_UNIT_TEST(Assembly, ExactLinearFlowsAreReproduced) {
+  const auto comm = worldComm();
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4})
+    for (const auto& material : {kNewtonian, kNonlinear})
+      for (const auto& ec : exactCases(material)) {
+        Mesh mesh = makeMesh(type, 8, 5, 0.0, 0.0, 2.0, 1.0, 0.25);
+        for (auto& xy : mesh.coords) {
+          const double c = std::cos(ec.rotation), s = std::sin(ec.rotation);
+          xy = {c * xy[0] - s * xy[1], s * xy[0] + c * xy[1]};
+        }
+        Problem problem(mesh, bcList(ec.groups), makePhysics(ec.geometry, material, 0.1, 0.0, 0.0), comm);
+        auto x = problem.vector();
+        int iterations = 0;
+        if (isNewtonian(material)) {
+          // Linear: the first step from the constrained zero field solves it; the second
+          // is round-off.
+          problem.bcs->imposeOnSolution(*x);
+          iterations = newton(problem, *x, 10);
+          TEST_COMPARE(iterations, <=, 2);
+        } else {
+          // Newton from the exact field plus a smooth 10 % disturbance of all dofs
+          // (constraints re-imposed); quadratic convergence needs the exact tangent.
+          const Field start = [&](double x, double y) {
+            auto v = ec.exact(x, y);
+            for (int c = 0; c < 3; ++c) v[c] += 0.1 * std::sin(2.1 * x + 1.3 * y + c);
+            return v;
+          };
+          interpolate(problem.mesh, start, *x);
+          problem.bcs->imposeOnSolution(*x);
+          iterations = newton(problem, *x, 10);
+          TEST_COMPARE(iterations, <=, 8);
+        }
+        const double err = errorTo(problem, *x, ec.exact);
+        out << ec.name << ", " << caseName(type, ec.geometry, material) << ": " << iterations
+            << " Newton step(s), max |u_h − u| = " << err << "\n";
+        TEST_COMPARE(err, <=, kSolveTol);
+      }
+}
+
+// ---------------------------------------------------------------------------------------
+// Assembled Jacobian vs finite differences; parallel vs serial
+// ---------------------------------------------------------------------------------------
+
+/// The conditions of the general test case on makeMesh's groups: symmetry on the inclined
+/// top (a Single constraint mixing both components), a moving wall, a mixed velocity /
+/// traction inlet and a loaded outlet.
+ParameterList generalConditions() {
+  return bcList({{"top", "Symmetry", {}},
+                 {"bottom", "Velocity", {{"Velocity X", 0.3}, {"Velocity Y", 0.0}}},
+                 {"left", "Velocity", {{"Velocity Y", 0.0}, {"Traction X", 2.0}}},
+                 {"right", "Traction", {{"Traction X", -0.4}, {"Traction Y", 0.25}}}});
+}
+
+/// A smooth state with strain rates ~1 (≫ e0) and pressure ~1, constraints imposed.
+const Field kSmooth = [](double x, double y) {
+  return std::array<double, 3>{0.8 * x + 0.3 * std::sin(1.7 * y + 0.4 * x),
+                               -0.8 * y + 0.3 * std::cos(1.1 * x - 0.6 * y),
+                               1.0 + 0.5 * std::sin(0.9 * x + 1.4 * y)};
+};
+
+TEUCHOS_UNIT_TEST(Assembly, JacobianMatchesDirectionalFiniteDifferences) {
+  // J v against (F(x + δv) − F(x − δv)) / (2δ) for a smooth direction v of size 1, δ = 1e-6:
+  // truncation (δ²/6)|F'''[v,v,v]| ≲ 1e-12 × 10² |J v| (strain rates O(1) ≫ e0, so each
+  // derivative of μ brings O(1)), round-off eps |F| / δ ≈ 2e-10 |F|. Tolerance 1e-7 |J v|∞:
+  // 100× above both; a constraint row or traction term missing from J, or a kernel
+  // derivative dropped, errs by O(1e-2..1).
+  const auto comm = worldComm();
+  const Field direction = [](double x, double y) {
+    return std::array<double, 3>{std::cos(0.7 * x + 2.0 * y), std::sin(1.9 * x - 0.5 * y), std::cos(1.2 * x * y)};
+  };
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4})
+    for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric}) {
+      Problem problem(makeMesh(type, 6, 4, 0.2, 0.0, 2.0, 1.0, 0.2, 0.3), generalConditions(),
+                      makePhysics(geometry, kNonlinear, 0.1, 0.3, -0.7), comm);
+      auto x = problem.vector(), v = problem.vector(), jv = problem.vector();
+      auto xp = problem.vector(), xm = problem.vector(), fp = problem.vector(), fm = problem.vector();
+      interpolate(problem.mesh, kSmooth, *x);
+      problem.bcs->imposeOnSolution(*x);
+      interpolate(problem.mesh, direction, *v);
+      auto J = problem.assembler->createJacobian();
+      problem.assembler->jacobian(*x, *J);
+      J->apply(*v, *jv);
+      const double delta = 1e-6;
+      xp->update(1.0, *x, delta, *v, 0.0);
+      xm->update(1.0, *x, -delta, *v, 0.0);
+      problem.assembler->residual(*xp, *fp);
+      problem.assembler->residual(*xm, *fm);
+      fp->update(-1.0 / (2 * delta), *fm, 1.0 / (2 * delta));  // the FD derivative
+      fp->update(-1.0, *jv, 1.0);
+      const double err = fp->normInf(), scale = jv->normInf();
+      out << caseName(type, geometry, kNonlinear) << ": |Jv − FD|∞ / |Jv|∞ = " << err / scale << "\n";
+      TEST_COMPARE(err, <=, 1e-7 * scale);
+    }
+}
+
+/// Residual and Jacobian gathered on rank 0, by global dof. Other ranks get empty ones.
+struct Gathered {
+  std::vector<double> f;
+  std::vector<std::map<GO, double>> rows;
+};
+
+/// Assembles F(x) and J(x) for the field `state` (constraints imposed) and gathers them.
+/// Also checks that residual() and jacobian()'s F agree (the two assembly paths).
+Gathered assembleAndGather(const Mesh& mesh, const DofMap& dofMap, const Assembler& assembler,
+                           const BoundaryConditions& bcs, const Field& state, double& pathDifference) {
+  const auto comm = dofMap.comm();
+  const GO numDofs = kDofsPerNode * mesh.numNodes();
+  Vector x(dofMap.ownedMap()), f(dofMap.ownedMap()), fj(dofMap.ownedMap());
+  interpolate(mesh, state, x);
+  bcs.imposeOnSolution(x);
+  assembler.residual(x, f);
+  auto J = assembler.createJacobian();
+  assembler.jacobian(x, *J, &fj);
+  fj.update(-1.0, f, 1.0);
+  pathDifference = fj.normInf() / f.normInf();
+
+  const bool root = comm->getRank() == 0;
+  auto rootMap = Teuchos::rcp(new Map(numDofs, root ? numDofs : 0, 0, comm));
+  Import toRoot(dofMap.ownedMap(), rootMap);
+  Vector fRoot(rootMap);
+  fRoot.doImport(f, toRoot, Tpetra::INSERT);
+  auto JRoot = Tpetra::importAndFillCompleteCrsMatrix<CrsMatrix>(Teuchos::rcp_implicit_cast<const CrsMatrix>(J),
+                                                                 toRoot, rootMap, rootMap);
+  Gathered g;
+  if (!root) return g;
+  auto fv = fRoot.getLocalViewHost(Tpetra::Access::ReadOnly);
+  g.f.assign(fv.data(), fv.data() + numDofs);
+  g.rows.resize(numDofs);
+  CrsMatrix::nonconst_global_inds_host_view_type cols("cols", JRoot->getNodeMaxNumRowEntries());
+  CrsMatrix::nonconst_values_host_view_type vals("vals", JRoot->getNodeMaxNumRowEntries());
+  for (GO row = 0; row < numDofs; ++row) {
+    size_t n = 0;
+    JRoot->getGlobalRowCopy(row, cols, vals, n);
+    for (size_t k = 0; k < n; ++k) g.rows[row][cols(k)] = vals(k);
+  }
+  return g;
+}
+
+// Each cell's contribution is computed from bitwise the same coordinates and dofs on any
+// number of ranks; only the order in which a shared row's ≤ 8 contributions are summed
+// differs (locally, then by the Export's ADD). That is ≤ 8 eps of the largest contribution,
+// which is at most ~10× the row's largest entry: 1e-12 of that scale leaves a margin of
+// > 50. Any partition-dependent error (a shared row counted twice or missed, a constraint
+// applied on the wrong rank, a wrong column map) is O(1) of the entry.
+constexpr double kParallelTol = 1e-12;
+
+/// Compares the gathered results of the N-rank and the one-rank assembly on rank 0 and
+/// returns the verdict on every rank.
+bool sameAssembly(const Gathered& par, const Gathered& ser, const Comm& comm, Teuchos::FancyOStream& out) {
+  int bad = 0;
+  if (comm.getRank() == 0) {
+    double fScale = 0.0;
+    for (double v : ser.f) fScale = std::max(fScale, std::abs(v));
+    double fErr = 0.0, jErr = 0.0;
+    int patternMismatch = 0;
+    for (size_t i = 0; i < ser.f.size(); ++i) {
+      fErr = std::max(fErr, std::abs(par.f[i] - ser.f[i]) / fScale);
+      const auto& rp = par.rows[i];
+      const auto& rs = ser.rows[i];
+      if (rp.size() != rs.size()) ++patternMismatch;
+      double rowScale = 0.0;
+      for (const auto& [col, v] : rs) rowScale = std::max(rowScale, std::abs(v));
+      for (const auto& [col, v] : rs) {
+        const auto it = rp.find(col);
+        if (it == rp.end()) { ++patternMismatch; continue; }
+        jErr = std::max(jErr, std::abs(it->second - v) / rowScale);
+      }
+    }
+    out << "residual: max |F_N − F_1| / max|F_1| = " << fErr << "; Jacobian: max |J_N − J_1| / row max = " << jErr
+        << "; pattern mismatches: " << patternMismatch << " (" << comm.getSize() << " rank(s))\n";
+    bad = !(fErr <= kParallelTol && jErr <= kParallelTol && patternMismatch == 0 && fScale > 0.0);
+  }
+  Teuchos::broadcast(comm, 0, Teuchos::outArg(bad));
+  return bad == 0;
+}
+
+TEUCHOS_UNIT_TEST(Assembly, ParallelEqualsSerialGeneratedMesh) {
+  // Distorted mesh with an inclined symmetry line, nonlinear law, body force.
+  const auto comm = worldComm();
+  const auto serialComm = comm->split(comm->getRank(), 0);  // rank 0's is the serial reference
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4})
+    for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric}) {
+      const auto physics = makePhysics(geometry, kNonlinear, 0.1, 0.3, -0.7);
+      const Mesh mesh = makeMesh(type, 7, 5, 0.0, 0.0, 2.0, 1.0, 0.25, 0.3);
+      double pathDiff = 0.0;
+      Problem par(mesh, generalConditions(), physics, comm);
+      const Gathered gp = assembleAndGather(par.mesh, *par.dofMap, *par.assembler, *par.bcs, kSmooth, pathDiff);
+      // residual() and the F of jacobian() are the same sums of the same values.
+      TEST_COMPARE(globalMax(*comm, pathDiff), <=, 1e-14);
+      Gathered gs;
+      if (comm->getRank() == 0) {
+        Problem ser(mesh, generalConditions(), physics, serialComm);
+        gs = assembleAndGather(ser.mesh, *ser.dofMap, *ser.assembler, *ser.bcs, kSmooth, pathDiff);
+      }
+      out << caseName(type, geometry, kNonlinear) << ": ";
+      TEST_ASSERT(sameAssembly(gp, gs, *comm, out));
+    }
+}
+
+/// The channel scene (meshes/channel.geo, N = 4) with symmetry, velocity, mixed and
+/// traction groups and the nonlinear law, through Simulation as the driver builds it.
+ParameterList channelCase(const std::string& elementType, const std::string& geometry) {
+  ParameterList p("flowform");
+  p.sublist("Problem").set("Geometry", geometry);
+  p.sublist("Problem").set("Body Force X", 0.3);
+  p.sublist("Problem").set("Body Force Y", -0.7);
+  ParameterList& m = p.sublist("Material");
+  m.set("Yield Stress", 0.5);
+  m.set("Rate Constant", 1.0);
+  m.set("Rate Exponent", 5.0);
+  m.set("Strain Rate Cutoff", 1e-2);
+  p.sublist("Stabilization").set("Beta", 0.1);
+  ParameterList& mesh = p.sublist("Mesh");
+  mesh.set("File", std::string(FLOWFORM_SOURCE_DIR) + "/meshes/channel.geo");
+  mesh.set("Element Type", elementType);
+  mesh.sublist("Geo Parameters").set("N", 4.0);
+  p.sublist("Boundary Conditions") = bcList({{"bottom", "Symmetry", {}},
+                                             {"top", "Velocity", {{"Velocity X", 0.3}, {"Velocity Y", 0.0}}},
+                                             {"inlet", "Velocity", {{"Velocity Y", 0.0}, {"Traction X", 4.0}}},
+                                             {"outlet", "Traction", {{"Traction X", -0.5}, {"Traction Y", 0.2}}}});
+  return p;
+}
+
+TEUCHOS_UNIT_TEST(Assembly, ParallelEqualsSerialChannel) {
+  const auto comm = worldComm();
+  const auto serialComm = comm->split(comm->getRank(), 0);
+  const Field state = [](double x, double y) {
+    return std::array<double, 3>{(1 - y * y) * (1 + 0.2 * std::sin(x)), 0.1 * std::sin(1.5 * x) * (1 - y * y),
+                                 4.0 - x + 0.3 * y};
+  };
+  for (const std::string type : {"Triangle", "Quadrilateral"})
+    for (const std::string geometry : {"Plane Strain", "Axisymmetric"}) {
+      const ParameterList params = channelCase(type, geometry);
+      Simulation par(params, "", comm);
+      // The conditions as the Simulation built them, to impose them on the state.
+      const BoundaryConditions parBcs(par.parameters().sublist("Boundary Conditions"), par.mesh(), par.dofMap());
+      double pathDiff = 0.0;
+      const Gathered gp =
+          assembleAndGather(par.mesh(), par.dofMap(), par.model().assembler(), parBcs, state, pathDiff);
+      TEST_COMPARE(globalMax(*comm, pathDiff), <=, 1e-14);
+      Gathered gs;
+      if (comm->getRank() == 0) {
+        Simulation ser(params, "", serialComm);
+        const BoundaryConditions serBcs(ser.parameters().sublist("Boundary Conditions"), ser.mesh(), ser.dofMap());
+        gs = assembleAndGather(ser.mesh(), ser.dofMap(), ser.model().assembler(), serBcs, state, pathDiff);
+      }
+      out << "channel, " << type << ", " << geometry << ": ";
+      TEST_ASSERT(sameAssembly(gp, gs, *comm, out));
+    }
+}
+
+}  // namespace

@@ -1,0 +1,9 @@
+# Material law, flow kernel (hand values, AD Jacobian vs FD, rigid motions) and the
+# assembled problem (patch tests, exact solves, parallel = serial on 1 and 2 ranks).
+flowform_unit_test(MaterialTest unit/MaterialTest.cpp)
+flowform_unit_test(FlowKernelTest unit/FlowKernelTest.cpp)
+flowform_unit_test(AssemblyTest unit/AssemblyTest.cpp)
+flowform_unit_test(AssemblyTest unit/AssemblyTest.cpp NP 2)
+target_compile_definitions(AssemblyTest PRIVATE FLOWFORM_SOURCE_DIR="${FLOWFORM_SOURCE_DIR}")
+# A rank that throws leaves the other waiting in a collective: fail instead of hanging.
+set_tests_properties(AssemblyTest AssemblyTest_np2 PROPERTIES TIMEOUT 300)
