@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_TimeMonitor.hpp>
@@ -32,12 +33,41 @@ double timerSeconds(const std::string& name) {
   return t.is_null() ? 0.0 : t->totalElapsedTime();
 }
 
+/// The entries of `list` whose type differs from the valid one's. Checked before Teuchos'
+/// validation, whose number validators would try to convert a string ("stod") and report
+/// neither the parameter nor the value.
+void checkTypes(const ParameterList& list, const ParameterList& valid, const std::string& prefix = "") {
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string& name = list.name(it);
+    const std::string path = prefix.empty() ? name : prefix + "/" + name;
+    const Teuchos::ParameterEntry* expected = valid.getEntryPtr(name);
+    if (!expected) continue;  // unknown names are Teuchos' to report, with the valid list
+    const Teuchos::ParameterEntry& given = list.entry(it);
+    if (expected->isList() && given.isList()) {
+      checkTypes(list.sublist(name), valid.sublist(name), path);
+    } else if (given.getAny().type() != expected->getAny().type()) {
+      throw InputError(path + " must be of type " + expected->getAny().typeName() + ", but the case gives " +
+                       given.getAny().typeName() + " '" + Teuchos::toString(given.getAny()) + "'");
+    }
+  }
+}
+
+/// Teuchos' message without its bookkeeping lines ("Throw number = 1", blank runs).
+std::string cleanTeuchosMessage(const std::string& what) {
+  std::istringstream in(what);
+  std::string line, out;
+  while (std::getline(in, line))
+    if (!line.empty() && line.rfind("Throw number", 0) != 0) out += line + "\n";
+  if (!out.empty()) out.pop_back();
+  return out;
+}
+
 /// Validates `list` against `valid` (setting defaults), naming the sublist on failure.
 void validateSublist(ParameterList& list, const ParameterList& valid, const std::string& where, int depth = 1000) {
   try {
     list.validateParametersAndSetDefaults(valid, depth);
   } catch (const std::exception& e) {
-    throw InputError("in " + where + ": " + e.what());
+    throw InputError("in " + where + ": " + cleanTeuchosMessage(e.what()));
   }
 }
 
@@ -89,6 +119,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
     : m_params(caseParams), m_comm(comm) {
   const auto start = std::chrono::steady_clock::now();
   const ParameterList& valid = *validParameters();
+  checkTypes(m_params, valid);
   validateSublist(m_params, valid, "the case parameter list", 0);
   for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output"})
     validateSublist(m_params.sublist(name), valid.sublist(name), name);
