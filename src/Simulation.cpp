@@ -74,7 +74,7 @@ void validateSublist(ParameterList& list, const ParameterList& valid, const std:
 void requirePositive(const ParameterList& list, const std::string& name, const std::string& where) {
   const double v = list.get<double>(name);
   if (!(v > 0.0))
-    throw InputError(where + "/" + name + " must be > 0 (got " + std::to_string(v) + ")");
+    throw InputError(where + "/" + name + " must be > 0 (got " + Teuchos::toString(v) + ")");
 }
 
 }  // namespace
@@ -276,7 +276,9 @@ void Simulation::writeOutput(const std::string& outDir) const {
                      {"cell_type", cellTypeName(m_mesh.cellType)}};
   summary["ranks"] = m_comm->getSize();
   summary["linear_solver"] = {{"factorizations", m_model->linearSolver().numFactorizations()},
-                              {"solves", m_model->linearSolver().numSolves()}};
+                              {"solves", m_model->linearSolver().numSolves()},
+                              {"residuals", m_model->numResiduals()},
+                              {"jacobians", m_model->numJacobians()}};
   const double assemblyResidual = timerSeconds("flowform: assembly (residual)");
   const double assemblyJacobian = timerSeconds("flowform: assembly (Jacobian)");
   summary["timings"] = {{"total", m_setupSeconds + m_solveSeconds + secondsSince(start)},

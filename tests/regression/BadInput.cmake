@@ -1,0 +1,131 @@
+# Bad-input regression tests: flowform must exit with status 2, say on stderr which file,
+# parameter or group is wrong, and write nothing (SPEC §5). Plus one good tiny case that
+# must exit 0 with summary.json saying converged.
+#
+# Most cases are the small channel (bad_input/channel_small.xml, N = 2) broken by --set;
+# separate XML files only where --set cannot express the fault (malformed XML, an
+# ill-typed entry in the file, a group the mesh lacks, a mesh with an inverted cell).
+# Each test runs check_exit.py, which removes the output directory first and then checks
+# status, stderr and that the directory was not created.
+
+find_package(Python3 COMPONENTS Interpreter)
+if(NOT Python3_Interpreter_FOUND)
+  message(STATUS "flowform: python3 not found, bad-input regression tests not registered")
+  return()
+endif()
+
+set(FLOWFORM_BAD_INPUT_DIR ${CMAKE_CURRENT_SOURCE_DIR}/regression/bad_input)
+set(FLOWFORM_BAD_INPUT_OUT ${CMAKE_CURRENT_BINARY_DIR}/regression/bad_input)
+set(FLOWFORM_CHECK_EXIT ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_exit.py)
+
+# flowform_exit_test(NAME CASE case.xml [SET P=V ...] [ARGS ...] [CONTAINS text ...]
+#                    [STATUS n] [NP n] [CONVERGED])
+#   Runs flowform on bad_input/CASE with -o <build>/regression/bad_input/NAME, the --set
+#   overrides and extra arguments, and checks exit status n (default 2), that stderr
+#   contains each CONTAINS text, and that nothing was written (or, with CONVERGED, that
+#   summary.json says converged). NP n > 1 runs it under mpiexec on n ranks.
+function(flowform_exit_test name)
+  cmake_parse_arguments(ARG "CONVERGED" "CASE;STATUS;NP" "SET;ARGS;CONTAINS" ${ARGN})
+  if(NOT DEFINED ARG_STATUS)
+    set(ARG_STATUS 2)
+  endif()
+  set(outdir ${FLOWFORM_BAD_INPUT_OUT}/${name})
+  set(check --outdir ${outdir} --status ${ARG_STATUS})
+  foreach(text ${ARG_CONTAINS})
+    list(APPEND check "--stderr-contains=${text}")
+  endforeach()
+  if(ARG_CONVERGED)
+    list(APPEND check --converged)
+  else()
+    list(APPEND check --no-output)
+  endif()
+  set(command $<TARGET_FILE:flowform> ${FLOWFORM_BAD_INPUT_DIR}/${ARG_CASE} -o ${outdir} --quiet)
+  foreach(assignment ${ARG_SET})
+    list(APPEND command --set ${assignment})
+  endforeach()
+  list(APPEND command ${ARG_ARGS})
+  set(labels regression)
+  if(ARG_NP AND ARG_NP GREATER 1)
+    set(command ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${ARG_NP} ${command})
+  endif()
+  add_test(NAME ${name} COMMAND ${Python3_EXECUTABLE} ${FLOWFORM_CHECK_EXIT} ${check} -- ${command})
+  set_tests_properties(${name} PROPERTIES LABELS "${labels}" TIMEOUT 300
+                       WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  if(ARG_NP AND ARG_NP GREATER 1)
+    set_tests_properties(${name} PROPERTIES ENVIRONMENT "${FLOWFORM_MPI_ENV}" PROCESSORS ${ARG_NP})
+  endif()
+endfunction()
+
+# --- the good case: the base of every bad one runs -------------------------------------------
+flowform_exit_test(regression_good_channel_small CASE channel_small.xml STATUS 0 CONVERGED)
+
+# --- the case file -----------------------------------------------------------------------------
+flowform_exit_test(bad_input_malformed_xml CASE malformed.xml
+  CONTAINS "malformed.xml" "not a valid XML parameter list")
+flowform_exit_test(bad_input_missing_case_file CASE nosuch_case.xml
+  CONTAINS "nosuch_case.xml" "does not exist")
+
+# --- parameter names and types ---------------------------------------------------------------
+flowform_exit_test(bad_input_unknown_parameter CASE channel_small.xml
+  SET "Material/Rate Exponnent=5"
+  CONTAINS "Rate Exponnent")
+flowform_exit_test(bad_input_ill_typed_parameter CASE ill_typed.xml
+  CONTAINS "Rate Exponent" "double")
+# A parameter with a range validator: Teuchos 13.2's EnhancedNumberValidator converts a
+# string entry with std::stod, whose exception says only "stod".
+flowform_exit_test(bad_input_ill_typed_validated_parameter CASE ill_typed_validated.xml
+  CONTAINS "Yield Stress" "half")
+flowform_exit_test(bad_input_set_type_error CASE channel_small.xml
+  SET "Material/Rate Exponent=abc"
+  CONTAINS "Material/Rate Exponent" "abc" "double")
+flowform_exit_test(bad_input_set_no_value CASE channel_small.xml
+  SET "Material/Rate Exponent"
+  CONTAINS "Material/Rate Exponent" "Path/To/Param=value")
+flowform_exit_test(bad_input_unknown_element_type CASE channel_small.xml
+  SET "Mesh/Element Type=Hexagon"
+  CONTAINS "Element Type" "Hexagon")
+
+# --- material constants: n > 0, σ0 >= 0, γ > 0, e0 > 0 ------------------------------------------
+flowform_exit_test(bad_input_rate_exponent_zero CASE channel_small.xml
+  SET "Material/Rate Exponent=0"
+  CONTAINS "Rate Exponent")
+flowform_exit_test(bad_input_rate_exponent_negative CASE channel_small.xml
+  SET "Material/Rate Exponent=-1"
+  CONTAINS "Rate Exponent")
+flowform_exit_test(bad_input_yield_stress_negative CASE channel_small.xml
+  SET "Material/Yield Stress=-0.5"
+  CONTAINS "Yield Stress")
+flowform_exit_test(bad_input_rate_constant_zero CASE channel_small.xml
+  SET "Material/Rate Constant=0"
+  CONTAINS "Rate Constant")
+flowform_exit_test(bad_input_rate_constant_negative CASE channel_small.xml
+  SET "Material/Rate Constant=-2"
+  CONTAINS "Rate Constant")
+flowform_exit_test(bad_input_cutoff_zero CASE channel_small.xml
+  SET "Material/Strain Rate Cutoff=0"
+  CONTAINS "Strain Rate Cutoff")
+flowform_exit_test(bad_input_cutoff_negative CASE channel_small.xml
+  SET "Material/Strain Rate Cutoff=-1e-3"
+  CONTAINS "Strain Rate Cutoff")
+
+# --- mesh and groups ---------------------------------------------------------------------------
+flowform_exit_test(bad_input_missing_mesh_file CASE channel_small.xml
+  SET "Mesh/File=nosuch_mesh.geo"
+  CONTAINS "nosuch_mesh.geo")
+flowform_exit_test(bad_input_missing_group CASE missing_group.xml
+  CONTAINS "nosuch")
+flowform_exit_test(bad_input_inverted_cell CASE inverted.xml
+  CONTAINS "inverted" "unit_square_flipped.msh")
+
+# --- command line ------------------------------------------------------------------------------
+flowform_exit_test(bad_input_unknown_option CASE channel_small.xml
+  ARGS --no-such-option
+  CONTAINS "--no-such-option")
+
+# --- on 2 ranks: every rank stops with status 2, none waits for another ------------------------
+if(MPIEXEC_EXECUTABLE)
+  flowform_exit_test(bad_input_missing_group_np2 CASE missing_group.xml NP 2
+    CONTAINS "nosuch")
+  flowform_exit_test(bad_input_inverted_cell_np2 CASE inverted.xml NP 2
+    CONTAINS "inverted")
+endif()

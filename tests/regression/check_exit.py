@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""Runs one flowform command and checks how it ended (tests/regression/BadInput.cmake).
+
+usage: check_exit.py --outdir DIR [--status N] [--stderr-contains TEXT ...]
+                     [--no-output | --converged] -- COMMAND ...
+
+  --outdir DIR           the output directory the command was given (-o DIR); removed first,
+                         so a result from an earlier run cannot pass the check
+  --status N             expected exit status (default 2, bad input)
+  --stderr-contains T    stderr must contain T (repeatable; case-sensitive)
+  --no-output            DIR must not exist afterwards (bad input writes nothing)
+  --converged            DIR/summary.json must exist and say "converged": true
+
+Prints the command, its status and its output, then each failed check; exits 0 when every
+check passes, 1 otherwise.
+"""
+import argparse
+import json
+import os
+import shlex
+import shutil
+import subprocess
+import sys
+
+
+def main():
+    if "--" not in sys.argv:
+        sys.exit("check_exit.py: expected '-- COMMAND ...'")
+    split = sys.argv.index("--")
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--outdir", required=True)
+    parser.add_argument("--status", type=int, default=2)
+    parser.add_argument("--stderr-contains", action="append", default=[])
+    mode = parser.add_mutually_exclusive_group()
+    mode.add_argument("--no-output", action="store_true")
+    mode.add_argument("--converged", action="store_true")
+    parser.add_argument("--timeout", type=float, default=600)
+    args = parser.parse_args(sys.argv[1:split])
+    command = sys.argv[split + 1:]
+    if not command:
+        sys.exit("check_exit.py: no command after '--'")
+
+    shutil.rmtree(args.outdir, ignore_errors=True)
+    print("command:", " ".join(shlex.quote(c) for c in command))
+    try:
+        run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             timeout=args.timeout)
+    except subprocess.TimeoutExpired:
+        print(f"FAIL: no exit within {args.timeout:g} s (a rank waiting on a failed one?)")
+        return 1
+    stdout = run.stdout.decode(errors="replace")
+    stderr = run.stderr.decode(errors="replace")
+    print(f"exit status: {run.returncode}")
+    print("--- stdout ---\n" + stdout.rstrip())
+    print("--- stderr ---\n" + stderr.rstrip())
+    print("--------------")
+
+    failures = []
+    if run.returncode != args.status:
+        failures.append(f"exit status {run.returncode}, expected {args.status}")
+    for text in args.stderr_contains:
+        if text not in stderr:
+            failures.append(f"stderr does not contain {text!r}")
+    if args.no_output and os.path.exists(args.outdir):
+        written = sorted(os.listdir(args.outdir)) if os.path.isdir(args.outdir) else []
+        failures.append(f"output directory {args.outdir} was created (contents: {written})")
+    if args.converged:
+        path = os.path.join(args.outdir, "summary.json")
+        try:
+            with open(path) as f:
+                summary = json.load(f)
+            if summary.get("converged") is not True:
+                failures.append(f"{path}: converged is {summary.get('converged')!r}, expected true")
+            if summary.get("exit_status") != args.status:
+                failures.append(f"{path}: exit_status is {summary.get('exit_status')!r}, "
+                                f"expected {args.status}")
+        except (OSError, ValueError) as e:
+            failures.append(f"cannot read {path}: {e}")
+
+    for f in failures:
+        print("FAIL:", f)
+    if not failures:
+        print("PASS")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
