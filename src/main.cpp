@@ -41,6 +41,12 @@ void printHelp() {
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  // Before Kokkos starts: it answers --help with its own text.
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      printHelp();
+      return 0;
+    }
   Tpetra::ScopeGuard scope(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   flowform::setLogRank(comm->getRank());
@@ -50,10 +56,7 @@ int main(int argc, char* argv[]) {
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
-      if (arg == "--help" || arg == "-h") {
-        if (comm->getRank() == 0) printHelp();
-        return 0;
-      } else if (arg == "-o") {
+      if (arg == "-o") {
         if (++i >= argc) throw flowform::InputError("-o needs a directory");
         outDir = argv[i];
       } else if (arg == "--set") {

@@ -15,3 +15,11 @@ add_test(NAME continuation_reaches_n40
                  --set "Material/Rate Exponent=40" --set "Mesh/Geo Parameters/N=8"
                  -- converged=true linear_problem=false parameters.Material.Rate\ Exponent=40.0)
 set_tests_properties(continuation_reaches_n40 PROPERTIES LABELS "regression")
+# Not converged: exit status 3, results still written and flagged (SPEC §5). One Newton
+# iteration per stage and no room to halve the continuation step cannot converge n = 5.
+add_test(NAME not_converged_exits_3
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_summary.py --expect-exit 3
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR}/xml/channel.xml ${CMAKE_CURRENT_BINARY_DIR}/not_converged
+                 --set "Solver/Max Newton Iterations=1" --set "Solver/Continuation/Minimum Step=0.2"
+                 -- converged=false exit_status=3)
+set_tests_properties(not_converged_exits_3 PROPERTIES LABELS "regression")

@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Runs flowform and checks entries of summary.json.
 
-usage: check_summary.py FLOWFORM CASE.xml OUTDIR [--set P=V ...] -- KEY=VALUE ...
+usage: check_summary.py [--expect-exit N] FLOWFORM CASE.xml OUTDIR [--set P=V ...] -- KEY=VALUE ...
 KEY is a dotted path into summary.json (e.g. linear_solver.factorizations); VALUE is
-compared exactly (JSON literal: true, 1, "text"). The run must exit 0.
+compared exactly (JSON literal: true, 1, "text"). The run must exit N (default 0), and
+summary.json must exist whatever the status.
 """
 import json
 import subprocess
@@ -11,12 +12,17 @@ import sys
 
 
 def main():
-    sep = sys.argv.index("--")
-    flowform, case, outdir = sys.argv[1:4]
-    extra, checks = sys.argv[4:sep], sys.argv[sep + 1:]
+    args = sys.argv[1:]
+    expected_status = 0
+    if args[0] == "--expect-exit":
+        expected_status = int(args[1])
+        args = args[2:]
+    sep = args.index("--")
+    flowform, case, outdir = args[0:3]
+    extra, checks = args[3:sep], args[sep + 1:]
     status = subprocess.run([flowform, case, "-o", outdir, "--quiet"] + extra).returncode
-    if status != 0:
-        print(f"flowform exited {status}")
+    if status != expected_status:
+        print(f"flowform exited {status}, expected {expected_status}")
         return 1
     with open(f"{outdir}/summary.json") as f:
         summary = json.load(f)
