@@ -49,7 +49,121 @@ const Vector& Assembler::importSolution(const Vector& xOwned) const {
   return *m_xOverlap;
 }
 
-void Assembler::residual(const Vector& xOwned, Vector& fOwned) const {
+void Assembler::setContactWalls(const std::vector<ContactWall>* walls) {
+  m_walls = walls;
+  m_wallNodes.clear();
+  if (!walls) return;
+  for (size_t w = 0; w < walls->size(); ++w) {
+    const ContactWall& wall = (*walls)[w];
+    for (int k = 0; k < wall.numNodes(); ++k) {
+      const LO node = m_dofMap.overlapIndex(wall.curve().nodes[k]);
+      if (node < 0 || node >= m_dofMap.numOwnedNodes()) continue;  // the owner assembles it
+      auto local = [&](int j) { return j < 0 ? LO(-1) : m_dofMap.overlapIndex(wall.curve().nodes[j]); };
+      m_wallNodes.push_back({static_cast<int>(w), k, node, local(wall.previous(k)), local(wall.next(k))});
+    }
+  }
+}
+
+template <typename Scalar>
+void Assembler::gatherWallNode(const Vector& xOverlap, int ref, Scalar* u, Scalar* p) const {
+  auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const WallNodeRef& r = m_wallNodes[ref];
+  u[0] = x(kDofsPerNode * r.node + kUx, 0);
+  u[1] = x(kDofsPerNode * r.node + kUy, 0);
+  p[0] = r.previous >= 0 ? x(kDofsPerNode * r.previous + kP, 0) : 0.0;
+  p[1] = x(kDofsPerNode * r.node + kP, 0);
+  p[2] = r.next >= 0 ? x(kDofsPerNode * r.next + kP, 0) : 0.0;
+}
+
+void Assembler::addContactResidual(const Vector& xOverlap, Vector& fOverlap, bool applyConstraints) const {
+  auto f = fOverlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (size_t i = 0; i < m_wallNodes.size(); ++i) {
+    const WallNodeRef& r = m_wallNodes[i];
+    double u[2], p[3], R[2] = {0.0, 0.0};
+    gatherWallNode(xOverlap, static_cast<int>(i), u, p);
+    (*m_walls)[r.wall].addNodeResidual(r.k, u, p, R);
+    if (applyConstraints) applyConstraintRows(m_bcs.constraints()[r.node], R);
+    f(kDofsPerNode * r.node + kUx, 0) += R[0];
+    f(kDofsPerNode * r.node + kUy, 0) += R[1];
+  }
+}
+
+void Assembler::addContactJacobian(const Vector& xOverlap, FECrsMatrix& jacobian, Vector* fOverlap) const {
+  // Dofs of a wall node's rows: u_x, u_y of the node and the pressures of previous, node, next.
+  using Fad = Sacado::Fad::SFad<double, 5>;
+  decltype(m_fOverlap->getLocalViewHost(Tpetra::Access::ReadWrite)) f;
+  if (fOverlap) f = fOverlap->getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (size_t i = 0; i < m_wallNodes.size(); ++i) {
+    const WallNodeRef& r = m_wallNodes[i];
+    Fad u[2], p[3], R[2] = {0.0, 0.0};
+    gatherWallNode(xOverlap, static_cast<int>(i), u, p);
+    u[0].diff(0, 5); u[1].diff(1, 5);
+    p[0].diff(2, 5); p[1].diff(3, 5); p[2].diff(4, 5);
+    (*m_walls)[r.wall].addNodeResidual(r.k, u, p, R);
+    applyConstraintRows(m_bcs.constraints()[r.node], R);
+    LO cols[5];
+    double values[5];
+    int n = 0;
+    const LO owners[5] = {r.node, r.node, r.previous, r.node, r.next};
+    const int comps[5] = {kUx, kUy, kP, kP, kP};
+    for (int c = 0; c < 2; ++c) {
+      n = 0;
+      for (int j = 0; j < 5; ++j) {
+        if (owners[j] < 0) continue;
+        cols[n] = m_dofMap.columnIndex(owners[j], comps[j]);
+        values[n++] = R[c].dx(j);
+      }
+      jacobian.sumIntoLocalValues(kDofsPerNode * r.node + c, n, values, cols);
+      if (fOverlap) f(kDofsPerNode * r.node + c, 0) += R[c].val();
+    }
+  }
+}
+
+void Assembler::nodalCellMaxima(const Vector& xOwned, std::vector<double>& viscosity,
+                                std::vector<double>& flowStress) const {
+  const Vector& xOverlap = importSolution(xOwned);
+  const LO numOverlap = static_cast<LO>(m_dofMap.overlapNodes().size());
+  // Node maps (one entry per node): the overlap-to-owned export with ABSMAX takes the
+  // largest value over the ranks, which makes the result independent of the partition.
+  std::vector<GO> gids(m_dofMap.overlapNodes().begin(), m_dofMap.overlapNodes().end());
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto overlapNodes = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids), 0, m_dofMap.comm()));
+  auto ownedNodes = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids.data(), m_dofMap.numOwnedNodes()), 0,
+                                         m_dofMap.comm()));
+  MultiVector local(overlapNodes, 2), owned(ownedNodes, 2);
+  {
+    auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto v = local.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const int npc = nodesPerCell(m_mesh.cellType);
+    CellGeometry g;
+    double dofs[kDofsPerNode * kMaxNodesPerCell];
+    for (size_t k = 0; k < m_dofMap.cells().size(); ++k) {
+      computeCellGeometry(m_mesh, m_dofMap.cells()[k], m_physics.kernel.geometry, g);
+      const LO* nodes = &m_dofMap.cellNodes()[npc * k];
+      for (int a = 0; a < npc; ++a)
+        for (int c = 0; c < kDofsPerNode; ++c) dofs[kDofsPerNode * a + c] = x(kDofsPerNode * nodes[a] + c, 0);
+      const auto d = strainRateAt(g.centroid, 0, m_physics.kernel.geometry, dofs);
+      const double eReg = regularizedStrainRate(d.ddot(), m_physics.material);
+      const double mu = flowform::viscosity(eReg, m_physics.material);
+      const double sigma = flowform::flowStress(eReg, m_physics.material);
+      for (int a = 0; a < npc; ++a) {
+        v(nodes[a], 0) = std::max(v(nodes[a], 0), mu);
+        v(nodes[a], 1) = std::max(v(nodes[a], 1), sigma);
+      }
+    }
+  }
+  owned.doExport(local, Export(overlapNodes, ownedNodes), Tpetra::ABSMAX);
+  local.doImport(owned, Import(ownedNodes, overlapNodes), Tpetra::INSERT);
+  auto v = local.getLocalViewHost(Tpetra::Access::ReadOnly);
+  viscosity.resize(numOverlap);
+  flowStress.resize(numOverlap);
+  for (LO i = 0; i < numOverlap; ++i) {
+    viscosity[i] = v(i, 0);
+    flowStress[i] = v(i, 1);
+  }
+}
+
+void Assembler::residual(const Vector& xOwned, Vector& fOwned, bool applyConstraints) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: assembly (residual)"));
   const Vector& xOverlap = importSolution(xOwned);
   m_fOverlap->putScalar(0.0);
@@ -71,13 +185,14 @@ void Assembler::residual(const Vector& xOwned, Vector& fOwned) const {
       std::fill(res, res + ndof, 0.0);
       addFlowResidual(g.rule, g.centroid, g.diameter, m_physics.kernel, m_physics.material, dofs, res);
       for (int a = 0; a < npc; ++a) {
-        applyConstraintRows(constraints[nodes[a]], res + kDofsPerNode * a);
+        if (applyConstraints) applyConstraintRows(constraints[nodes[a]], res + kDofsPerNode * a);
         for (int c = 0; c < kDofsPerNode; ++c) f(kDofsPerNode * nodes[a] + c, 0) += res[kDofsPerNode * a + c];
       }
     }
   }
-  addTractions(*m_fOverlap);
-  addConstraintRows(xOverlap, nullptr, m_fOverlap.get());
+  addTractions(*m_fOverlap, applyConstraints);
+  if (m_walls) addContactResidual(xOverlap, *m_fOverlap, applyConstraints);
+  if (applyConstraints) addConstraintRows(xOverlap, nullptr, m_fOverlap.get());
   fOwned.putScalar(0.0);
   fOwned.doExport(*m_fOverlap, *m_dofMap.exporter(), Tpetra::ADD);
 }
@@ -92,6 +207,7 @@ void Assembler::jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fO
     assembleJacobianCells<3>(xOverlap, jacobian, fOwned ? m_fOverlap.get() : nullptr);
   else
     assembleJacobianCells<4>(xOverlap, jacobian, fOwned ? m_fOverlap.get() : nullptr);
+  if (m_walls) addContactJacobian(xOverlap, jacobian, fOwned ? m_fOverlap.get() : nullptr);
   addConstraintRows(xOverlap, &jacobian, fOwned ? m_fOverlap.get() : nullptr);
   Tpetra::endAssembly(jacobian);
   if (fOwned) {
@@ -172,7 +288,7 @@ void Assembler::addConstraintRows(const Vector& xOverlap, FECrsMatrix* jacobian,
   }
 }
 
-void Assembler::addTractions(Vector& fOverlap) const {
+void Assembler::addTractions(Vector& fOverlap, bool applyConstraints) const {
   // R_u[a] −= ∫_edge N_a t̄ ds (× 2π r when axisymmetric), 2-point Gauss on each edge.
   auto f = fOverlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto& constraints = m_bcs.constraints();
@@ -192,7 +308,7 @@ void Assembler::addTractions(Vector& fOverlap) const {
         for (int c = 0; c < 2; ++c) load[a][c] -= w * N[a] * e.traction[c];
     }
     for (int a = 0; a < 2; ++a) {
-      applyConstraintRows(constraints[e.nodes[a]], load[a]);
+      if (applyConstraints) applyConstraintRows(constraints[e.nodes[a]], load[a]);
       for (int c = 0; c < 2; ++c) f(kDofsPerNode * e.nodes[a] + c, 0) += load[a][c];
     }
   }

@@ -83,8 +83,9 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParamet
     Teuchos::setStringToIntegralParameter<int>(
         "Type", "Traction", "Velocity: prescribed velocity components; Symmetry: zero normal "
         "velocity on a straight boundary; Traction: prescribed traction (default zero: free). "
-        "Traction X/Y act on any type, on the components it leaves free",
-        Teuchos::tuple<std::string>("Velocity", "Symmetry", "Traction"), valid.get());
+        "Traction X/Y act on any type, on the components it leaves free. Contact Wall: a frictional "
+        "tool wall (its parameters: contact/ContactWall.hpp)",
+        Teuchos::tuple<std::string>("Velocity", "Symmetry", "Traction", "Contact Wall"), valid.get());
     valid->set("Velocity X", 0.0, "prescribed u_x (Velocity type; omit to leave u_x free)");
     valid->set("Velocity Y", 0.0, "prescribed u_y (Velocity type; omit to leave u_y free)");
     valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components");
@@ -106,6 +107,8 @@ BoundaryConditions::BoundaryConditions(const Teuchos::ParameterList& bcList, con
       throw InputError("Boundary Conditions/" + name + ": mesh '" + mesh.source +
                        "' has no boundary group of that name; it has: " + mesh.boundaryNames());
     Teuchos::ParameterList group = bcList.sublist(name);  // copy: validation sets defaults
+    if (group.isType<std::string>("Type") && group.get<std::string>("Type") == "Contact Wall")
+      continue;  // a ContactWall (contact/ContactWall.hpp) validates and assembles it
     try {
       group.validateParameters(*validGroupParameters());
     } catch (const std::exception& e) {

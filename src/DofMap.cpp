@@ -34,7 +34,9 @@ std::vector<size_t> nodeDegrees(const Mesh& mesh) {
 
 }  // namespace
 
-DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm) : m_comm(comm) {
+DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm,
+               const std::vector<std::array<GO, 2>>& couplings)
+    : m_comm(comm) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: dof map and graph"));
   const int rank = comm->getRank();
   const int npc = nodesPerCell(mesh.cellType);
@@ -48,6 +50,11 @@ DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm) : m_comm(
     if (m_cellPart[c] != rank) continue;
     m_cells.push_back(c);
     for (int a = 0; a < npc; ++a) touched[mesh.cell(c)[a]] = 1;
+  }
+  // Coupled nodes of an owned node become ghosts (they share a cell, maybe on another rank).
+  for (const auto& [i, j] : couplings) {
+    if (owner[i] == rank) touched[j] = 1;
+    if (owner[j] == rank) touched[i] = 1;
   }
   for (GO n = 0; n < mesh.numNodes(); ++n)
     if (touched[n] && owner[n] == rank) m_overlapNodes.push_back(n);
@@ -91,6 +98,15 @@ DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm) : m_comm(
         cellDofs[kDofsPerNode * a + c] = kDofsPerNode * m_overlapNodes[m_cellNodes[npc * k + a]] + c;
     for (GO row : cellDofs) m_graph->insertGlobalIndices(row, Teuchos::ArrayView<const GO>(cellDofs));
   }
+  for (const auto& pair : couplings)
+    for (int k = 0; k < 2; ++k) {
+      const GO i = pair[k], j = pair[1 - k];
+      if (owner[i] != rank) continue;
+      GO cols[kDofsPerNode];
+      for (int c = 0; c < kDofsPerNode; ++c) cols[c] = kDofsPerNode * j + c;
+      for (int c = 0; c < kDofsPerNode; ++c)
+        m_graph->insertGlobalIndices(kDofsPerNode * i + c, Teuchos::ArrayView<const GO>(cols, kDofsPerNode));
+    }
   Tpetra::endAssembly(*m_graph);
 
   // Column indices of the assembly ("owned plus shared") state, for sumIntoLocalValues.

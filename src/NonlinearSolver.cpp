@@ -121,6 +121,7 @@ double NonlinearSolver::linearSolve(Vector& x, const FlowPhysics& physics) {
 
 StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics) {
   m_model.setPhysics(physics);
+  if (m_beforeNewton) m_beforeNewton(x);
   StageReport report{physics.material.rateExponent, physics.material.cutoff, 0, false, 0.0};
 
   auto group = Teuchos::rcp(new FlowGroup(m_model, x));
@@ -155,6 +156,23 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics) {
   report.converged = status == NOX::StatusTest::Converged && std::isfinite(report.residualNorm);
   if (report.converged) Tpetra::deep_copy(x, *tpetraVector(solver->getSolutionGroup().getX()));
   return report;
+}
+
+SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target) {
+  if (isNewtonian(target.material)) return solve(x, target);
+  Vector start(x, Teuchos::Copy);
+  StageReport sr = newton(x, target);
+  SolveReport report;
+  report.stages.push_back(sr);
+  report.newtonIterations = sr.newtonIterations;
+  report.residualNorm = sr.residualNorm;
+  report.converged = sr.converged;
+  if (sr.converged) return report;
+  log() << "  re-solve failed; starting again from the Newtonian predictor\n";
+  Tpetra::deep_copy(x, start);
+  SolveReport full = solve(x, target);
+  full.newtonIterations += report.newtonIterations;
+  return full;
 }
 
 SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target) {

@@ -110,7 +110,13 @@ Teuchos::RCP<const ParameterList> Simulation::validParameters() {
   output.set("Boundary CSV", true, "one CSV per named boundary group");
   output.set("Cell Fields", Teuchos::Array<std::string>({"strain_rate", "equivalent_stress", "viscosity"}),
              "cell fields to write: any of strain_rate, equivalent_stress, viscosity");
-  valid->sublist("Regression", false, "expected values for the regression checker (scripts/check_regression)");
+  valid->sublist("Responses", false, "functionals by name (include/flowform/Responses.hpp)");
+  ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (SPEC §2)");
+  contact.set("Max Status Changes", 500, "give up (not converged) after this many changes",
+              Teuchos::rcp(new EnhancedNumberValidator<int>(0, 1000000)));
+  contact.set("Pressure Tolerance", 1e-3, "an active node is released when p < -this [stress]", nonNegative);
+  contact.set("Penetration Tolerance", 1e-4, "a free node is activated when u·n > this [velocity]", nonNegative);
+  valid->sublist("Regression", false, "expected values for a regression checker");
   return valid;
 }
 
@@ -121,7 +127,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   const ParameterList& valid = *validParameters();
   checkTypes(m_params, valid);
   validateSublist(m_params, valid, "the case parameter list", 0);
-  for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output"})
+  for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output", "Contact"})
     validateSublist(m_params.sublist(name), valid.sublist(name), name);
   if (!m_params.isSublist("Mesh") || !m_params.sublist("Mesh").isParameter("File"))
     throw InputError("the case has no Mesh/File: name a .msh or .geo file");
@@ -151,10 +157,28 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
         throw InputError("Problem/Geometry is Axisymmetric but mesh '" + m_mesh.source +
                          "' has nodes at x = r < 0; the axis is x = 0 and the section must lie in x >= 0");
 
-  m_dofMap = std::make_unique<DofMap>(m_mesh, comm);
-  m_bcs = std::make_unique<BoundaryConditions>(m_params.sublist("Boundary Conditions"), m_mesh, *m_dofMap);
+  // Contact walls first: the friction law couples wall neighbours, which the DofMap must know.
+  const ParameterList& bcList = m_params.sublist("Boundary Conditions");
+  std::vector<std::array<GO, 2>> couplings;
+  for (auto it = bcList.begin(); it != bcList.end(); ++it) {
+    const std::string& name = bcList.name(it);
+    if (!bcList.isSublist(name)) continue;  // BoundaryConditions reports it
+    const ParameterList& group = bcList.sublist(name);
+    if (!group.isType<std::string>("Type") || group.get<std::string>("Type") != "Contact Wall") continue;
+    if (!m_mesh.hasBoundary(name))
+      throw InputError("Boundary Conditions/" + name + ": mesh '" + m_mesh.source +
+                       "' has no boundary group of that name; it has: " + m_mesh.boundaryNames());
+    m_walls.emplace_back(name, group, m_mesh, m_physics.kernel.geometry);
+    const auto pairs = m_walls.back().couplings();
+    couplings.insert(couplings.end(), pairs.begin(), pairs.end());
+  }
+  m_responses = std::make_unique<Responses>(m_params.sublist("Responses"), m_mesh);
+
+  m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings);
+  m_bcs = std::make_unique<BoundaryConditions>(bcList, m_mesh, *m_dofMap);
   m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
   m_assembler->setPhysics(m_physics);
+  if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
   m_model = std::make_unique<FlowModel>(*m_assembler);
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
@@ -169,7 +193,14 @@ const SolveReport& Simulation::run() {
         << cellTypeName(m_mesh.cellType) << " cells, " << m_dofMap->ownedMap()->getGlobalNumElements()
         << " dofs, " << m_comm->getSize() << " rank(s)\n";
   NonlinearSolver solver(*m_model, m_params.sublist("Solver"));
+  if (!m_walls.empty()) {
+    updateWallScales(*m_solution);
+    solver.setBeforeNewton([this](const Vector& x) { updateWallScales(x); });
+  }
   m_report = solver.solve(*m_solution, m_physics);
+  if (m_report.converged && !m_walls.empty()) runContactLoop(solver);
+  if (m_report.converged)
+    m_functionals = m_responses->evaluate(*m_solution, m_mesh, *m_dofMap, *m_assembler, m_walls);
   m_solveSeconds = secondsSince(start);
   if (m_report.converged)
     log() << "flowform: converged (" << m_report.newtonIterations << " Newton iterations, "
@@ -177,6 +208,78 @@ const SolveReport& Simulation::run() {
   else
     log() << "flowform: NOT CONVERGED: " << m_report.message << "\n";
   return m_report;
+}
+
+void Simulation::updateWallScales(const Vector& x) {
+  std::vector<double> mu, sigma;
+  m_assembler->nodalCellMaxima(x, mu, sigma);
+  for (ContactWall& wall : m_walls) {
+    std::vector<double> wallMu(wall.numNodes(), 0.0), wallSigma(wall.numNodes(), 0.0);
+    for (int k = 0; k < wall.numNodes(); ++k) {
+      const LO n = m_dofMap->overlapIndex(wall.curve().nodes[k]);
+      if (n < 0) continue;  // neither this rank's node nor a neighbour of one: not used here
+      wallMu[k] = mu[n];
+      wallSigma[k] = sigma[n];
+    }
+    wall.setScales(std::move(wallMu), std::move(wallSigma));
+  }
+  m_model->invalidateJacobian();
+}
+
+void Simulation::wallValues(const ContactWall& wall, std::vector<double>& p,
+                            std::vector<std::array<double, 2>>& u) const {
+  std::vector<GO> gids;
+  for (GO node : wall.curve().nodes)
+    for (int c = 0; c < kDofsPerNode; ++c) gids.push_back(kDofsPerNode * node + c);
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto replicated = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids), 0, m_comm));
+  Vector values(replicated);
+  values.doImport(*m_solution, Import(m_dofMap->ownedMap(), replicated), Tpetra::INSERT);
+  auto v = values.getLocalViewHost(Tpetra::Access::ReadOnly);
+  p.resize(wall.numNodes());
+  u.resize(wall.numNodes());
+  for (int k = 0; k < wall.numNodes(); ++k) {
+    u[k] = {v(kDofsPerNode * k + kUx, 0), v(kDofsPerNode * k + kUy, 0)};
+    p[k] = v(kDofsPerNode * k + kP, 0);
+  }
+}
+
+void Simulation::runContactLoop(NonlinearSolver& solver) {
+  const ParameterList& contact = m_params.sublist("Contact");
+  const int maxChanges = contact.get<int>("Max Status Changes");
+  const double pTol = contact.get<double>("Pressure Tolerance"), uTol = contact.get<double>("Penetration Tolerance");
+  SolveReport again;
+  while (m_report.converged) {
+    // The largest violation over all walls, at a limit of a contact zone (SPEC §2).
+    int wallIndex = -1;
+    StatusChange best;
+    std::vector<double> p;
+    std::vector<std::array<double, 2>> u;
+    for (size_t w = 0; w < m_walls.size(); ++w) {
+      wallValues(m_walls[w], p, u);
+      const StatusChange c = m_walls[w].nextChange(p, u, pTol, uTol);
+      if (c.node >= 0 && c.violation > best.violation) { best = c; wallIndex = static_cast<int>(w); }
+    }
+    if (wallIndex < 0) break;
+    if (m_contactChanges >= maxChanges) {
+      m_report.converged = false;
+      m_report.message = "the contact status did not settle after " + std::to_string(maxChanges) + " changes";
+      break;
+    }
+    ContactWall& wall = m_walls[wallIndex];
+    const auto& xy = m_mesh.coords[wall.curve().nodes[best.node]];
+    log() << "contact: wall '" << wall.name() << "' node " << wall.curve().nodes[best.node] << " at (" << xy[0] << ", "
+          << xy[1] << "): " << (best.activate ? "free -> active (penetration " : "active -> free (tension ")
+          << best.violation << ")\n";
+    wall.setActive(best.node, best.activate);
+    ++m_contactChanges;
+    again = solver.resolve(*m_solution, m_physics);
+    m_report.newtonIterations += again.newtonIterations;
+    m_report.converged = again.converged;
+    m_report.residualNorm = again.residualNorm;
+    if (!again.converged) m_report.message = "after contact change " + std::to_string(m_contactChanges) + ": " + again.message;
+  }
+  log() << "contact: " << m_contactChanges << " status change(s)\n";
 }
 
 FieldSet Simulation::gatherFields() const {
@@ -232,6 +335,13 @@ FieldSet Simulation::gatherFields() const {
     pressure.values[n] = d(kDofsPerNode * n + kP, 0);
   }
   fields.nodal = {velocity, pressure};
+  if (!m_walls.empty()) {
+    // 1 active, 0 free, -1 not on a contact wall
+    Field status{"contact_status", 1, std::vector<double>(numNodes, -1.0)};
+    for (const ContactWall& wall : m_walls)
+      for (int k = 0; k < wall.numNodes(); ++k) status.values[wall.curve().nodes[k]] = wall.isActive(k) ? 1.0 : 0.0;
+    fields.nodal.push_back(std::move(status));
+  }
   auto c = allCells.getLocalViewHost(Tpetra::Access::ReadOnly);
   const char* names[3] = {"strain_rate", "equivalent_stress", "viscosity"};
   for (const auto& wanted : m_params.sublist("Output").get<Teuchos::Array<std::string>>("Cell Fields"))
@@ -269,7 +379,7 @@ void Simulation::writeOutput(const std::string& outDir) const {
   summary["linear_problem"] = m_report.linear;
   summary["continuation_stages"] = m_report.continuationStages;
   summary["residual_norm"] = m_report.residualNorm;
-  summary["contact_changes"] = 0;          // no contact walls in this case
+  summary["contact_changes"] = m_contactChanges;
   summary["free_surface_iterations"] = 0;  // no free surfaces in this case
   summary["dofs"] = m_dofMap->ownedMap()->getGlobalNumElements();
   summary["mesh"] = {{"file", m_mesh.source}, {"nodes", m_mesh.numNodes()}, {"cells", m_mesh.numCells()},
@@ -298,6 +408,7 @@ void Simulation::writeOutput(const std::string& outDir) const {
                       {"residual_norm", s.residualNorm}});
   summary["stages"] = stages;
   summary["functionals"] = nlohmann::json::object();
+  for (const auto& [name, value] : m_functionals) summary["functionals"][name] = value;
   summary["sensitivities"] = nlohmann::json::object();
   summary["fd_check"] = nlohmann::json::object();
   summary["parameters"] = parameterListToJson(m_params);

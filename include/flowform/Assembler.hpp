@@ -13,6 +13,7 @@
 #include "flowform/Material.hpp"
 #include "flowform/Mesh.hpp"
 #include "flowform/TpetraTypes.hpp"
+#include "flowform/contact/ContactWall.hpp"
 #include "flowform/kernels/FlowResidual.hpp"
 
 namespace flowform {
@@ -31,8 +32,17 @@ class Assembler {
   void setPhysics(const FlowPhysics& physics) { m_physics = physics; }
   const FlowPhysics& physics() const { return m_physics; }
 
-  /// F(x) on the owned map.
-  void residual(const Vector& xOwned, Vector& fOwned) const;
+  /// Contact walls to assemble with the cells (owned by the caller; may be empty).
+  void setContactWalls(const std::vector<ContactWall>* walls);
+
+  /// F(x) on the owned map. With `applyConstraints` false, the rows of constrained nodes
+  /// keep their momentum equations: at a prescribed-velocity node the entry is then the
+  /// force the tool applies (the reaction), which the Boundary Force response sums.
+  void residual(const Vector& xOwned, Vector& fOwned, bool applyConstraints = true) const;
+
+  /// Per overlap node: the largest cell viscosity μ and flow stress σ̄ (at the centroid) over
+  /// all cells that touch it, on every rank alike (the contact penalty scales).
+  void nodalCellMaxima(const Vector& xOwned, std::vector<double>& viscosity, std::vector<double>& flowStress) const;
   /// J = dF/dx at x into `jacobian` (built on dofMap.graph()); F(x) too when `fOwned` is given.
   void jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fOwned = nullptr) const;
 
@@ -43,13 +53,25 @@ class Assembler {
   template <int NumNodes>
   void assembleJacobianCells(const Vector& xOverlap, FECrsMatrix& jacobian, Vector* fOverlap) const;
   void addConstraintRows(const Vector& xOverlap, FECrsMatrix* jacobian, Vector* fOverlap) const;
-  void addTractions(Vector& fOverlap) const;
+  void addTractions(Vector& fOverlap, bool applyConstraints = true) const;
+  template <typename Scalar>
+  void gatherWallNode(const Vector& xOverlap, int ref, Scalar* u, Scalar* p) const;
+  void addContactResidual(const Vector& xOverlap, Vector& fOverlap, bool applyConstraints) const;
+  void addContactJacobian(const Vector& xOverlap, FECrsMatrix& jacobian, Vector* fOverlap) const;
+
+  /// An owned wall node and the overlap indices of it and its wall neighbours (−1: none).
+  struct WallNodeRef {
+    int wall, k;
+    LO node, previous, next;
+  };
   const Vector& importSolution(const Vector& xOwned) const;
 
   const Mesh& m_mesh;
   const DofMap& m_dofMap;
   const BoundaryConditions& m_bcs;
   FlowPhysics m_physics;
+  const std::vector<ContactWall>* m_walls = nullptr;
+  std::vector<WallNodeRef> m_wallNodes;
   Teuchos::RCP<Vector> m_xOverlap;  ///< scratch: x imported to the overlap map
   Teuchos::RCP<Vector> m_fOverlap;  ///< scratch: residual before the export to owned rows
 };

@@ -6,6 +6,7 @@
 // Dof global id = kDofsPerNode * node + component.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <Teuchos_RCP.hpp>
@@ -17,7 +18,12 @@ namespace flowform {
 
 class DofMap {
  public:
-  DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm);
+  /// `couplings` are node pairs (i, j) whose dofs a term other than the cells couples: the
+  /// owner of i gets j into its overlap and row i gets j's columns (contact walls: the
+  /// friction at a wall node depends on the pressure at its neighbours along the wall).
+  /// Both nodes of a pair must share a cell, so the global row lengths do not change.
+  DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm,
+         const std::vector<std::array<GO, 2>>& couplings = {});
 
   const Teuchos::RCP<const Comm>& comm() const { return m_comm; }
   const Teuchos::RCP<const Map>& ownedMap() const { return m_ownedMap; }      ///< dofs

@@ -12,6 +12,7 @@
 // If the target needs no continuation (n ≤ n_s and e0 ≥ e0_s) there is one stage, λ = 1.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,14 @@ class NonlinearSolver {
   /// The model's physics is left at the target.
   SolveReport solve(Vector& x, const FlowPhysics& target);
 
+  /// Solves again after a small change (a contact status change): Newton at the target
+  /// from x; if that fails, the full solve() (predictor and continuation).
+  SolveReport resolve(Vector& x, const FlowPhysics& target);
+
+  /// Called with the current x before every Newton solve (each continuation stage, each
+  /// re-solve): the contact walls take their penalty scales from it.
+  void setBeforeNewton(std::function<void(const Vector&)> hook) { m_beforeNewton = std::move(hook); }
+
  private:
   /// One Newton solve at the model's current physics; returns iterations, sets converged.
   StageReport newton(Vector& x, const FlowPhysics& physics);
@@ -61,6 +70,7 @@ class NonlinearSolver {
 
   FlowModel& m_model;
   Teuchos::ParameterList m_params;
+  std::function<void(const Vector&)> m_beforeNewton;
 };
 
 }  // namespace flowform

@@ -2,8 +2,10 @@
 // results on disk. main.cpp is a thin command-line layer over this; tests drive it too.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -13,6 +15,8 @@
 #include "flowform/FlowModel.hpp"
 #include "flowform/Mesh.hpp"
 #include "flowform/NonlinearSolver.hpp"
+#include "flowform/Responses.hpp"
+#include "flowform/contact/ContactWall.hpp"
 #include "flowform/io/FieldSet.hpp"
 
 namespace flowform {
@@ -43,16 +47,31 @@ class Simulation {
   FlowModel& model() { return *m_model; }
   const SolveReport& report() const { return m_report; }
   int exitStatus() const { return m_report.converged ? 0 : 3; }
+  const std::vector<ContactWall>& contactWalls() const { return m_walls; }
+  int contactChanges() const { return m_contactChanges; }
+  /// The case's responses at the current solution (empty before run()).
+  const std::map<std::string, double>& functionals() const { return m_functionals; }
 
   /// Nodal velocity and pressure, and the cell fields the case asks for, gathered on rank 0
   /// (other ranks get empty arrays).
   FieldSet gatherFields() const;
 
  private:
+  /// Contact-status loop (SPEC §2): one change at a time, re-solving after each.
+  void runContactLoop(NonlinearSolver& solver);
+  /// Penalty scales of every wall from the current solution.
+  void updateWallScales(const Vector& x);
+  /// Pressure and velocity at every node of `wall`, on every rank.
+  void wallValues(const ContactWall& wall, std::vector<double>& p, std::vector<std::array<double, 2>>& u) const;
+
   Teuchos::ParameterList m_params;
   Teuchos::RCP<const Comm> m_comm;
   Mesh m_mesh;
   FlowPhysics m_physics;
+  std::vector<ContactWall> m_walls;
+  std::unique_ptr<Responses> m_responses;
+  std::map<std::string, double> m_functionals;
+  int m_contactChanges = 0;
   std::unique_ptr<DofMap> m_dofMap;
   std::unique_ptr<BoundaryConditions> m_bcs;
   std::unique_ptr<Assembler> m_assembler;

@@ -1,0 +1,46 @@
+// Functionals of a converged solution (the case's "Responses" sublist), by name:
+//   Boundary Force  — Σ over the group's nodes of the reaction (the unconstrained momentum
+//                     residual: the force the tool applies to the material), component X or Y
+//   Mean Pressure   — −Σ R_i·n_i / A over the group: the mean normal pressure the tool applies
+//                     (A its length, or area 2πr ds when axisymmetric)
+//   Boundary Power  — Σ R_i·u_i over the group: the power the tool puts in
+//   Plastic Power   — ∫ s:D dΩ = ∫ 2μ D:D dΩ, the viscoplastic dissipation (≈ ∫ σ̄ e dΩ)
+//   Friction Power  — Σ over active wall nodes of g_k u_t,k, the friction dissipation
+//   Dead Zone       — area (volume) of the cells where |u| < Fraction × Reference Speed
+// Forces are per unit depth in plane strain (for the modelled half when symmetric), total
+// in axisymmetric models.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "flowform/Assembler.hpp"
+#include "flowform/DofMap.hpp"
+#include "flowform/Mesh.hpp"
+#include "flowform/contact/ContactWall.hpp"
+
+namespace flowform {
+
+class Responses {
+ public:
+  static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
+
+  /// `list` is the "Responses" sublist; InputError for a bad type or a missing group.
+  Responses(const Teuchos::ParameterList& list, const Mesh& mesh);
+
+  /// Every response at x, the same on every rank.
+  std::map<std::string, double> evaluate(const Vector& xOwned, const Mesh& mesh, const DofMap& dofMap,
+                                         const Assembler& assembler, const std::vector<ContactWall>& walls) const;
+
+ private:
+  struct Response {
+    std::string name, type, boundary, component;
+    double fraction = 0.01, referenceSpeed = 1.0;
+  };
+  std::vector<Response> m_responses;
+};
+
+}  // namespace flowform
