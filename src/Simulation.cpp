@@ -114,6 +114,10 @@ Teuchos::RCP<const ParameterList> Simulation::validParameters() {
   ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (SPEC §2)");
   contact.set("Max Status Changes", 500, "give up (not converged) after this many changes",
               Teuchos::rcp(new EnhancedNumberValidator<int>(0, 1000000)));
+  contact.set("Max Changes Per Node", 4,
+              "a node that changed this often keeps its status (no cycling); if it still violates its "
+              "criterion the run is reported not converged",
+              Teuchos::rcp(new EnhancedNumberValidator<int>(1, 1000)));
   contact.set("Pressure Tolerance", 1e-3, "an active node is released when p < -this [stress]", nonNegative);
   contact.set("Penetration Tolerance", 1e-4, "a free node is activated when u·n > this [velocity]", nonNegative);
   valid->sublist("Regression", false, "expected values for a regression checker");
@@ -248,19 +252,29 @@ void Simulation::runContactLoop(NonlinearSolver& solver) {
   const ParameterList& contact = m_params.sublist("Contact");
   const int maxChanges = contact.get<int>("Max Status Changes");
   const double pTol = contact.get<double>("Pressure Tolerance"), uTol = contact.get<double>("Penetration Tolerance");
+  const int maxPerNode = contact.get<int>("Max Changes Per Node");
   SolveReport again;
   while (m_report.converged) {
     // The largest violation over all walls, at a limit of a contact zone (SPEC §2).
-    int wallIndex = -1;
+    int wallIndex = -1, unsettled = 0;
     StatusChange best;
     std::vector<double> p;
     std::vector<std::array<double, 2>> u;
     for (size_t w = 0; w < m_walls.size(); ++w) {
       wallValues(m_walls[w], p, u);
-      const StatusChange c = m_walls[w].nextChange(p, u, pTol, uTol);
+      int stuck = 0;
+      const StatusChange c = m_walls[w].nextChange(p, u, pTol, uTol, maxPerNode, &stuck);
+      unsettled += stuck;
       if (c.node >= 0 && c.violation > best.violation) { best = c; wallIndex = static_cast<int>(w); }
     }
-    if (wallIndex < 0) break;
+    if (wallIndex < 0) {
+      if (unsettled > 0) {
+        m_report.converged = false;
+        m_report.message = std::to_string(unsettled) + " contact node(s) cycle between active and free (each changed " +
+                           std::to_string(maxPerNode) + " times) and still violate their criterion";
+      }
+      break;
+    }
     if (m_contactChanges >= maxChanges) {
       m_report.converged = false;
       m_report.message = "the contact status did not settle after " + std::to_string(maxChanges) + " changes";

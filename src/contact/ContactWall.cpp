@@ -64,6 +64,7 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   // InputError for a missing group, a zero-length segment, a branched group.
   m_curve = buildBoundaryCurve(mesh, mesh.boundary(group));
   m_active.assign(m_curve.nodes.size(), m_settings.initiallyActive);
+  m_changes.assign(m_curve.nodes.size(), 0);
   m_viscosity.assign(m_curve.nodes.size(), 1.0);
   m_flowStress.assign(m_curve.nodes.size(), 1.0);
   for (GO node : m_curve.nodes) m_coords.push_back(mesh.coords[node]);
@@ -82,8 +83,10 @@ void ContactWall::setScales(std::vector<double> viscosity, std::vector<double> f
 }
 
 StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
-                                     double pressureTolerance, double penetrationTolerance) const {
+                                     double pressureTolerance, double penetrationTolerance,
+                                     int maxChangesPerNode, int* unsettled) const {
   StatusChange atLimit, anywhere;
+  if (unsettled) *unsettled = 0;
   for (int k = 0; k < numNodes(); ++k) {
     double violation = 0.0;
     if (m_active[k]) {
@@ -93,6 +96,10 @@ StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::ve
       violation = u[k][0] * n[0] + u[k][1] * n[1] - penetrationTolerance;  // moving into the tool
     }
     if (!(violation > 0.0)) continue;
+    if (m_changes[k] >= maxChangesPerNode) {
+      if (unsettled) ++*unsettled;
+      continue;
+    }
     const int a = previous(k), b = next(k);
     const bool limit = a < 0 || b < 0 || m_active[a] != m_active[k] || m_active[b] != m_active[k];
     StatusChange& best = limit ? atLimit : anywhere;

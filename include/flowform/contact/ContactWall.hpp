@@ -71,7 +71,12 @@ class ContactWall {
   std::vector<std::array<GO, 2>> couplings() const;
 
   bool isActive(int k) const { return m_active[k] != 0; }
-  void setActive(int k, bool active) { m_active[k] = active; }
+  /// Changes the status of node k and counts the change.
+  void setActive(int k, bool active) {
+    m_active[k] = active;
+    ++m_changes[k];
+  }
+  int changes(int k) const { return m_changes[k]; }
   /// Wall neighbours of node k (−1 where the wall ends).
   int previous(int k) const { return k > 0 ? k - 1 : (m_curve.closed ? numNodes() - 1 : -1); }
   int next(int k) const { return k + 1 < numNodes() ? k + 1 : (m_curve.closed ? 0 : -1); }
@@ -93,9 +98,12 @@ class ContactWall {
   /// is released, a free node that penetrates (u·n > penetrationTolerance) is activated;
   /// among the candidates at the limit of the contact zone (a neighbour of the other
   /// status, or a wall end) the one with the largest violation. Candidates not at a limit
-  /// are taken only when no limit node is one. `p`, `u` per wall node.
+  /// are taken only when no limit node is one. `p`, `u` per wall node. A node that has
+  /// already changed `maxChangesPerNode` times is not changed again (it would cycle);
+  /// `unsettled` returns how many such nodes still violate their criterion.
   StatusChange nextChange(const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
-                          double pressureTolerance, double penetrationTolerance) const;
+                          double pressureTolerance, double penetrationTolerance, int maxChangesPerNode,
+                          int* unsettled = nullptr) const;
 
  private:
   template <typename Scalar>
@@ -106,6 +114,7 @@ class ContactWall {
   ContactWallSettings m_settings;
   Geometry m_geometry;
   std::vector<char> m_active;
+  std::vector<int> m_changes;
   std::vector<double> m_viscosity, m_flowStress;
   std::vector<std::array<double, 2>> m_coords;
 };
