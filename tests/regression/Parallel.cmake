@@ -8,3 +8,10 @@ foreach(cell Triangle Quadrilateral)
                    --set "Mesh/Element Type=${cell}" --set "Mesh/Geo Parameters/N=8")
   set_tests_properties(parallel_equals_serial_${cell} PROPERTIES LABELS "regression")
 endforeach()
+# With contact walls: the friction law couples wall neighbours across the partition, and the
+# contact-status loop must take the same decisions on every rank.
+add_test(NAME parallel_equals_serial_extrusion
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
+                 $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml
+                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_extrusion)
+set_tests_properties(parallel_equals_serial_extrusion PROPERTIES LABELS "regression")
