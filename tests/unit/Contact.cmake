@@ -1,0 +1,1 @@
+flowform_unit_test(ContactWallTest unit/ContactWallTest.cpp)

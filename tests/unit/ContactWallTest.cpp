@@ -1,0 +1,197 @@
+// The contact wall's nodal law (SPEC §2) against hand values, its AD tangent against
+// finite differences, and the status decisions.
+#include <Sacado.hpp>
+#include <Teuchos_UnitTestHarness.hpp>
+
+#include "flowform/InputError.hpp"
+#include "flowform/contact/ContactWall.hpp"
+
+namespace {
+
+using namespace flowform;
+
+/// Two triangles over [0,1]×[0,1] with the bottom split at x = 0.5: the wall "bottom" has
+/// nodes (0,0), (0.5,0), (1,0), outward normal (0,−1), tangent (1,0); L = 0.5 per segment.
+Mesh bottomMesh() {
+  Mesh m;
+  m.source = "test";
+  m.cellType = CellType::Triangle3;
+  m.coords = {{0.0, 0.0}, {0.5, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
+  m.cellNodes = {0, 1, 4, 1, 3, 4, 1, 2, 3};
+  m.boundaries = {{"bottom", {{0, 1}, {1, 2}}}};
+  return m;
+}
+
+ContactWall makeWall(const std::string& law, double nu, double m = 0.0, Geometry g = Geometry::PlaneStrain) {
+  Teuchos::ParameterList p;
+  p.set("Type", "Contact Wall");
+  p.set("Friction Law", law);
+  p.set("Friction Coefficient", nu);
+  p.set("Shear Factor", m);
+  p.set("Norton Coefficient", 0.7);
+  p.set("Norton Exponent", 0.3);
+  p.set("Normal Penalty Factor", 100.0);
+  p.set("Tangential Penalty Factor", 10.0);
+  ContactWall wall("bottom", p, bottomMesh(), g);
+  wall.setScales({2.0, 2.0, 2.0}, {1.5, 1.5, 1.5});  // μ = 2, σ̄ = 1.5 at every node
+  return wall;
+}
+
+const double kL = 0.5;
+
+TEUCHOS_UNIT_TEST(ContactWall, CoulombSlipIsConsistentlyLumpedPressure) {
+  const ContactWall wall = makeWall("Coulomb", 0.2);
+  // Middle node: two segments of length L; f̂ = ν [L(p1/3 + p0/6) + L(p1/3 + p2/6)].
+  const double p[3] = {1.0, 2.0, 4.0};
+  const double fHat = 0.2 * (kL * (2.0 / 3 + 1.0 / 6) + kL * (2.0 / 3 + 4.0 / 6));
+  const double u[2] = {0.5, 0.0};  // slides along +t: α_t |u_t| = 10·2·0.5 = 10 > f̂
+  bool sticks = true;
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, u, p, &sticks), fHat, 1e-14);
+  TEST_ASSERT(!sticks);
+  // Residual: R += α_n (u·n) n + g t with α_n = 100·2, u·n = 0 here, t = (1, 0).
+  double R[2] = {0.0, 0.0};
+  wall.addNodeResidual(1, u, p, R);
+  TEST_FLOATING_EQUALITY(R[0], fHat, 1e-14);
+  TEST_EQUALITY_CONST(R[1], 0.0);
+  // Reversed sliding reverses the force.
+  const double uBack[2] = {-0.5, 0.0};
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, uBack, p), -fHat, 1e-14);
+  // End node 0 has one segment: f̂ = ν L (p0/3 + p1/6) (its p[0] is ignored: no neighbour).
+  const double pEnd[3] = {99.0, 1.0, 2.0};
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(0, u, pEnd), 0.2 * kL * (1.0 / 3 + 2.0 / 6), 1e-14);
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, StickBelowTheBoundAndNothingInTension) {
+  const ContactWall wall = makeWall("Coulomb", 0.2);
+  const double p[3] = {1.0, 2.0, 4.0};
+  const double u[2] = {1e-4, 0.0};  // α_t |u_t| = 2e-3 < f̂ = 0.25: stick
+  bool sticks = false;
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, u, p, &sticks), 10.0 * 2.0 * 1e-4, 1e-14);
+  TEST_ASSERT(sticks);
+  const double tension[3] = {-1.0, -2.0, -4.0};  // p⁺ = 0: no friction
+  TEST_EQUALITY_CONST(wall.tangentialForce(1, u, tension), 0.0);
+  // Normal penalty: u·n with n = (0,−1); u_y = −0.01 means u·n = 0.01 (moving into the tool).
+  const double uIn[2] = {0.0, -0.01};
+  double R[2] = {0.0, 0.0};
+  wall.addNodeResidual(1, uIn, tension, R);
+  TEST_FLOATING_EQUALITY(R[1], 100.0 * 2.0 * 0.01 * (-1.0), 1e-14);
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, TrescaOrowanNortonByHand) {
+  const double p[3] = {1.0, 2.0, 4.0};
+  const double u[2] = {0.5, 0.0};
+  // Tresca, m = 0.5, σ̄ = 1.5: f̂ = m σ̄/√3 × 2 L (1/3 + 1/6) = m σ̄/√3 × L.
+  const double tresca = 0.5 * 1.5 / std::sqrt(3.0) * kL;
+  TEST_FLOATING_EQUALITY(makeWall("Tresca", 0.0, 0.5).tangentialForce(1, u, p), tresca, 1e-14);
+  // Orowan: the smaller of the Coulomb and Tresca bounds.
+  const double coulomb = 0.2 * (kL * (2.0 / 3 + 1.0 / 6) + kL * (2.0 / 3 + 4.0 / 6));
+  TEST_FLOATING_EQUALITY(makeWall("Orowan", 0.2, 0.5).tangentialForce(1, u, p), std::min(coulomb, tresca), 1e-14);
+  TEST_FLOATING_EQUALITY(makeWall("Orowan", 0.01, 0.5).tangentialForce(1, u, p), 0.05 * coulomb, 1e-14);
+  // Norton: α_f K (u_t² + ε²)^((q−1)/2) u_t × tributary length (two halves of L = L).
+  const double norton = 0.7 * std::pow(0.25 + 1e-12, 0.5 * (0.3 - 1.0)) * 0.5 * kL;
+  TEST_FLOATING_EQUALITY(makeWall("Norton", 0.0).tangentialForce(1, u, p), norton, 1e-12);
+  TEST_EQUALITY_CONST(makeWall("None", 0.2).tangentialForce(1, u, p), 0.0);
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, FreeNodesAndSegmentsCarryNothing) {
+  ContactWall wall = makeWall("Coulomb", 0.2);
+  const double p[3] = {1.0, 2.0, 4.0};
+  const double u[2] = {0.5, 0.3};
+  wall.setActive(2, false);  // segment (1,2) inactive: only (0,1) loads node 1
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, u, p), 0.2 * kL * (2.0 / 3 + 1.0 / 6), 1e-14);
+  double R[2] = {0.0, 0.0};
+  wall.addNodeResidual(2, u, p, R);  // a free node: no term at all
+  TEST_EQUALITY_CONST(R[0], 0.0);
+  TEST_EQUALITY_CONST(R[1], 0.0);
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, AxisymmetricWeightIsTwoPiR) {
+  // Same wall, axisymmetric: f̂ = ν Σ ∫ N_k p W ds with W = 2π r; r = x here.
+  const ContactWall wall = makeWall("Coulomb", 0.2, 0.0, Geometry::Axisymmetric);
+  const double p[3] = {1.0, 1.0, 1.0};  // p = 1: f̂ = ν 2π ∫ N_1 r ds over both segments
+  // ∫_0^0.5 N_1 r ds with N_1 = r/0.5: = 0.5²/3 ... computed exactly: ∫_0^L (s/L) s ds = L²/3;
+  // right segment r = 0.5 + s, N_1 = 1 − s/L: ∫ (1 − s/L)(0.5 + s) ds = 0.5 L/2 + L²/6.
+  const double integral = kL * kL / 3 + 0.5 * kL / 2 + kL * kL / 6;
+  const double u[2] = {5.0, 0.0};
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, u, p), 0.2 * 2 * M_PI * integral, 1e-13);
+}
+
+/// AD tangent of the node residual against central differences, in slip and in stick.
+void checkTangent(const ContactWall& wall, int k, const double* u0, const double* p0, Teuchos::FancyOStream& out,
+                  bool& success) {
+  using Fad = Sacado::Fad::SFad<double, 5>;
+  Fad u[2] = {Fad(5, 0, u0[0]), Fad(5, 1, u0[1])};
+  Fad p[3] = {Fad(5, 2, p0[0]), Fad(5, 3, p0[1]), Fad(5, 4, p0[2])};
+  Fad R[2] = {0.0, 0.0};
+  wall.addNodeResidual(k, u, p, R);
+  const double delta = 1e-7;  // central FD: truncation O(δ²) on the smooth branch, round-off ~1e-16/δ
+  for (int j = 0; j < 5; ++j) {
+    double up[2] = {u0[0], u0[1]}, pp[3] = {p0[0], p0[1], p0[2]};
+    double um[2] = {u0[0], u0[1]}, pm[3] = {p0[0], p0[1], p0[2]};
+    (j < 2 ? up[j] : pp[j - 2]) += delta;
+    (j < 2 ? um[j] : pm[j - 2]) -= delta;
+    double Rp[2] = {0, 0}, Rm[2] = {0, 0};
+    wall.addNodeResidual(k, up, pp, Rp);
+    wall.addNodeResidual(k, um, pm, Rm);
+    for (int c = 0; c < 2; ++c) {
+      const double fd = (Rp[c] - Rm[c]) / (2 * delta);
+      TEST_FLOATING_EQUALITY(R[c].dx(j) + 1.0, fd + 1.0, 1e-6);
+    }
+  }
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, TangentMatchesFiniteDifferences) {
+  const double p[3] = {1.0, 2.0, 4.0};
+  const double slip[2] = {0.5, 0.02}, stick[2] = {1e-4, 0.003};
+  for (const char* law : {"Coulomb", "Tresca", "Orowan", "Norton"}) {
+    out << law << "\n";
+    const ContactWall wall = makeWall(law, 0.2, 0.5);
+    checkTangent(wall, 1, slip, p, out, success);
+    checkTangent(wall, 1, stick, p, out, success);
+  }
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, StatusChangesAtTheZoneLimitOneAtATime) {
+  ContactWall wall = makeWall("Coulomb", 0.2);
+  const std::vector<std::array<double, 2>> u(3, {0.0, 0.0});
+  // All active; node 1 (interior) in strong tension, node 2 (a wall end, so a limit) in mild tension.
+  StatusChange c = wall.nextChange({1.0, -5.0, -0.5}, u, 1e-3, 1e-4, 4);
+  TEST_EQUALITY_CONST(c.node, 2);
+  TEST_ASSERT(!c.activate);
+  wall.setActive(2, false);
+  // Now node 1 borders a free node: it is at the limit and goes next.
+  c = wall.nextChange({1.0, -5.0, -0.5}, u, 1e-3, 1e-4, 4);
+  TEST_EQUALITY_CONST(c.node, 1);
+  // A free node moving into the tool (u·n > 0, n = (0,−1): u_y < 0) is activated.
+  wall.setActive(1, false);
+  c = wall.nextChange({1.0, 0.0, 0.0}, {{0.0, 0.0}, {0.0, -0.1}, {0.0, 0.0}}, 1e-3, 1e-4, 4);
+  TEST_EQUALITY_CONST(c.node, 1);
+  TEST_ASSERT(c.activate);
+  // Within the tolerances nothing changes.
+  c = wall.nextChange({1.0, -1e-4, 0.0}, {{0.0, 0.0}, {0.0, -1e-5}, {0.0, 0.0}}, 1e-3, 1e-4, 4);
+  TEST_EQUALITY_CONST(c.node, -1);
+  // A node that has used up its changes is not changed again but is reported unsettled.
+  wall.setActive(1, true);
+  wall.setActive(1, false);  // node 1 has now changed 3 times
+  int unsettled = 0;
+  c = wall.nextChange({1.0, 0.0, 0.0}, {{0.0, 0.0}, {0.0, -0.1}, {0.0, 0.0}}, 1e-3, 1e-4, 2, &unsettled);
+  TEST_EQUALITY_CONST(c.node, -1);
+  TEST_EQUALITY_CONST(unsettled, 1);
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, BadInputNamesTheGroup) {
+  Teuchos::ParameterList p;
+  p.set("Type", "Contact Wall");
+  p.set("Friction Coefficient", -0.1);
+  TEST_THROW(ContactWall("bottom", p, bottomMesh(), Geometry::PlaneStrain), InputError);
+  Teuchos::ParameterList ok;
+  ok.set("Type", "Contact Wall");
+  try {
+    ContactWall("nosuch", ok, bottomMesh(), Geometry::PlaneStrain);
+    success = false;
+  } catch (const InputError& e) {
+    TEST_ASSERT(std::string(e.what()).find("nosuch") != std::string::npos);
+  }
+}
+
+}  // namespace
