@@ -55,6 +55,17 @@ void applyOverride(Teuchos::ParameterList& params, const std::string& assignment
 
   const Teuchos::ParameterEntry* like = findEntry(params, path, name);
   if (!like) like = findEntry(valid, path, name);
+  if (!like && !path.empty()) {
+    // A free-form sublist (a boundary group, a response): its template "<... name>" in the
+    // valid list has the entry types.
+    std::vector<std::string> templatePath(path.begin(), path.end() - 1);
+    const Teuchos::ParameterList* parent = &valid;
+    for (const auto& p : templatePath) parent = parent && parent->isSublist(p) ? &parent->sublist(p) : nullptr;
+    if (parent)
+      for (auto it = parent->begin(); it != parent->end() && !like; ++it)
+        if (parent->name(it).rfind("<", 0) == 0 && parent->isSublist(parent->name(it)))
+          like = parent->sublist(parent->name(it)).getEntryPtr(name);
+  }
 
   Teuchos::ParameterList* target = &params;
   for (const auto& p : path) target = &target->sublist(p);

@@ -102,7 +102,14 @@ Teuchos::RCP<const ParameterList> Simulation::validParameters() {
   stab.set("Beta", 0.1, "β in τ_K = β h_K² / (2 μ_K); h_K = cell diameter (docs/verification.md)", nonNegative);
 
   valid->set("Mesh", *validMeshParameters(), "the mesh (gmsh .msh or .geo)");
-  valid->sublist("Boundary Conditions", false, "one sublist per boundary group name");
+  // Free-form: one sublist per group. The template documents the entries (--help) and gives
+  // --set the types of entries the case does not have yet.
+  ParameterList& bcTemplate = valid->sublist("Boundary Conditions", false, "one sublist per boundary group name")
+                                  .sublist("<group name>", false, "the condition on one gmsh physical group");
+  bcTemplate.setParameters(*BoundaryConditions::validGroupParameters());
+  for (auto it = ContactWall::validParameters()->begin(); it != ContactWall::validParameters()->end(); ++it)
+    if (ContactWall::validParameters()->name(it) != "Type")
+      bcTemplate.setEntry(ContactWall::validParameters()->name(it), ContactWall::validParameters()->entry(it));
   valid->set("Solver", *NonlinearSolver::validParameters(), "Newton and continuation");
 
   ParameterList& output = valid->sublist("Output", false, "what is written");
@@ -110,7 +117,9 @@ Teuchos::RCP<const ParameterList> Simulation::validParameters() {
   output.set("Boundary CSV", true, "one CSV per named boundary group");
   output.set("Cell Fields", Teuchos::Array<std::string>({"strain_rate", "equivalent_stress", "viscosity"}),
              "cell fields to write: any of strain_rate, equivalent_stress, viscosity");
-  valid->sublist("Responses", false, "functionals by name (include/flowform/Responses.hpp)");
+  valid->sublist("Responses", false, "functionals by name (include/flowform/Responses.hpp)")
+      .sublist("<response name>", false, "one functional")
+      .setParameters(*Responses::validParameters());
   ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (SPEC §2)");
   contact.set("Max Status Changes", 500, "give up (not converged) after this many changes",
               Teuchos::rcp(new EnhancedNumberValidator<int>(0, 1000000)));
