@@ -139,7 +139,13 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   const auto start = std::chrono::steady_clock::now();
   const ParameterList& valid = *validParameters();
   checkTypes(m_params, valid);
-  validateSublist(m_params, valid, "the case parameter list", 0);
+  // The root is only checked (names, no defaults): taking defaults there would copy the
+  // "<group name>" templates of the free-form sublists into the case.
+  try {
+    m_params.validateParameters(valid, 0);
+  } catch (const std::exception& e) {
+    throw InputError("in the case parameter list: " + cleanTeuchosMessage(e.what()));
+  }
   for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output", "Contact"})
     validateSublist(m_params.sublist(name), valid.sublist(name), name);
   if (!m_params.isSublist("Mesh") || !m_params.sublist("Mesh").isParameter("File"))
