@@ -18,7 +18,7 @@ Teuchos::RCP<const Teuchos::ParameterList> Responses::validParameters() {
   Teuchos::setStringToIntegralParameter<int>(
       "Type", "Boundary Force", "what to compute (see include/flowform/Responses.hpp)",
       Teuchos::tuple<std::string>("Boundary Force", "Mean Pressure", "Boundary Power", "Plastic Power",
-                                  "Friction Power", "Dead Zone"),
+                                  "Friction Power", "Penalty Power", "Stabilization Power", "Dead Zone"),
       valid.get());
   valid->set("Boundary", "", "boundary group (Boundary Force, Mean Pressure, Boundary Power)");
   Teuchos::setStringToIntegralParameter<int>("Component", "X", "force component (Boundary Force)",
@@ -57,28 +57,42 @@ double sumOverRanks(const Comm& comm, double local) {
   return global;
 }
 
-/// ∫ 2μ D:D dΩ (plastic power) and the dead-zone area over this rank's cells.
+/// ∫ 2μ D:D dΩ (plastic power), Σ τ_K ∫ ∇p·(∇p − f) (stabilization power) and the
+/// dead-zone area over this rank's cells.
 void cellIntegrals(const Vector& xOverlap, const Mesh& mesh, const DofMap& dofMap, const FlowPhysics& physics,
-                   double deadSpeed, double& plasticPower, double& deadArea) {
+                   double deadSpeed, double& plasticPower, double& stabilizationPower, double& deadArea) {
   auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   const int npc = nodesPerCell(mesh.cellType);
   const Geometry geometry = physics.kernel.geometry;
   CellQuadrature rule, centroid;
   std::array<double, 2> xy[kMaxNodesPerCell];
   double dofs[kDofsPerNode * kMaxNodesPerCell];
-  plasticPower = deadArea = 0.0;
+  plasticPower = stabilizationPower = deadArea = 0.0;
+  const int order = (mesh.cellType == CellType::Triangle3 && geometry == Geometry::PlaneStrain) ? 1 : 2;
   for (size_t k = 0; k < dofMap.cells().size(); ++k) {
     const LO* nodes = &dofMap.cellNodes()[npc * k];
     for (int a = 0; a < npc; ++a) {
       xy[a] = mesh.coords[dofMap.overlapNodes()[nodes[a]]];
       for (int c = 0; c < kDofsPerNode; ++c) dofs[kDofsPerNode * a + c] = x(kDofsPerNode * nodes[a] + c, 0);
     }
-    computeCellQuadrature(mesh.cellType, xy, 2, rule);
+    // The kernel's own rule, so that the powers match the discrete equations exactly.
+    computeCellQuadrature(mesh.cellType, xy, order, rule);
     computeCellQuadrature(mesh.cellType, xy, 1, centroid);
+    const auto dc = strainRateAt(centroid, 0, geometry, dofs);
+    const double muK = viscosity(regularizedStrainRate(dc.ddot(), physics.material), physics.material);
+    const double h = cellDiameter(mesh.cellType, xy);
+    const double tau = physics.kernel.beta * h * h / (2.0 * muK);
     for (int q = 0; q < rule.numPoints; ++q) {
       const auto d = strainRateAt(rule, q, geometry, dofs);
       const double mu = viscosity(regularizedStrainRate(d.ddot(), physics.material), physics.material);
-      plasticPower += measureWeight(rule, q, geometry) * 2.0 * mu * d.ddot();
+      const double w = measureWeight(rule, q, geometry);
+      plasticPower += w * 2.0 * mu * d.ddot();
+      double px = 0.0, py = 0.0;
+      for (int a = 0; a < npc; ++a) {
+        px += rule.dNdx[q][a] * dofs[kDofsPerNode * a + kP];
+        py += rule.dNdy[q][a] * dofs[kDofsPerNode * a + kP];
+      }
+      stabilizationPower += w * tau * (px * (px - physics.kernel.bodyForce[0]) + py * (py - physics.kernel.bodyForce[1]));
     }
     double ux = 0.0, uy = 0.0;
     for (int a = 0; a < npc; ++a) {
@@ -130,11 +144,14 @@ std::map<std::string, double> Responses::evaluate(const Vector& xOwned, const Me
         value /= area;
       }
       values[r.name] = value;
-    } else if (r.type == "Plastic Power" || r.type == "Dead Zone") {
-      double plastic, dead;
-      cellIntegrals(xOverlap, mesh, dofMap, assembler.physics(), r.fraction * r.referenceSpeed, plastic, dead);
-      values[r.name] = sumOverRanks(comm, r.type == "Plastic Power" ? plastic : dead);
-    } else if (r.type == "Friction Power") {
+    } else if (r.type == "Plastic Power" || r.type == "Dead Zone" || r.type == "Stabilization Power") {
+      double plastic, stabilization, dead;
+      cellIntegrals(xOverlap, mesh, dofMap, assembler.physics(), r.fraction * r.referenceSpeed, plastic, stabilization,
+                    dead);
+      values[r.name] = sumOverRanks(comm, r.type == "Plastic Power" ? plastic
+                                          : r.type == "Dead Zone"   ? dead
+                                                                    : stabilization);
+    } else if (r.type == "Friction Power" || r.type == "Penalty Power") {
       for (const ContactWall& wall : walls)
         for (int k = 0; k < wall.numNodes(); ++k) {
           const LO n = dofMap.overlapIndex(wall.curve().nodes[k]);
@@ -143,8 +160,16 @@ std::map<std::string, double> Responses::evaluate(const Vector& xOwned, const Me
           const double u[2] = {x(kDofsPerNode * n + kUx, 0), x(kDofsPerNode * n + kUy, 0)};
           const double p[3] = {pressure(wall.previous(k)), x(kDofsPerNode * n + kP, 0), pressure(wall.next(k))};
           const auto& nk = wall.curve().normals[k];
-          const double ut = -nk[1] * u[0] + nk[0] * u[1];
-          local += wall.tangentialForce(k, u, p) * ut;
+          if (r.type == "Friction Power") {
+            const double ut = -nk[1] * u[0] + nk[0] * u[1];
+            local += wall.tangentialForce(k, u, p) * ut;
+          } else {
+            // The normal part of the node's contact residual, dotted with u: α_n (u·n)².
+            double R[2] = {0.0, 0.0};
+            wall.addNodeResidual(k, u, p, R);
+            const double g = wall.tangentialForce(k, u, p);
+            local += (R[0] + g * nk[1]) * u[0] + (R[1] - g * nk[0]) * u[1];
+          }
         }
       values[r.name] = sumOverRanks(comm, local);
     }

@@ -6,6 +6,11 @@
 //   Boundary Power  — Σ R_i·u_i over the group: the power the tool puts in
 //   Plastic Power   — ∫ s:D dΩ = ∫ 2μ D:D dΩ, the viscoplastic dissipation (≈ ∫ σ̄ e dΩ)
 //   Friction Power  — Σ over active wall nodes of g_k u_t,k, the friction dissipation
+//   Penalty Power   — Σ over active wall nodes of α_n (u·n)², the work of the normal penalty
+//   Stabilization Power — Σ_K τ_K ∫_K ∇p·(∇p − f) dΩ = −∫ p div u: the work of the pressure
+//                     stabilization. With the two above, the discrete power balance
+//                     Σ_tools Boundary Power = Plastic + Friction + Penalty + Stabilization
+//                     holds to solver tolerance; the last two vanish as h → 0.
 //   Dead Zone       — area (volume) of the cells where |u| < Fraction × Reference Speed
 // Forces are per unit depth in plane strain (for the modelled half when symmetric), total
 // in axisymmetric models.

@@ -1,0 +1,18 @@
+# The discrete power balance closes to solver tolerance (power_balance.py), with friction
+# (Coulomb ν = 0.1, plane strain), without, and axisymmetric.
+set(FLOWFORM_PYTHON /usr/bin/python3)
+foreach(variant coulomb frictionless axisymmetric)
+  set(case ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml)
+  set(extra "")
+  if(variant STREQUAL "frictionless")
+    set(extra --set "Boundary Conditions/container/Friction Coefficient=0.0"
+              --set "Boundary Conditions/die_face/Friction Coefficient=0.0"
+              --set "Boundary Conditions/die_land/Friction Coefficient=0.0")
+  elseif(variant STREQUAL "axisymmetric")
+    set(case ${FLOWFORM_SOURCE_DIR}/xml/extrusion_axisym.xml)
+  endif()
+  add_test(NAME power_balance_${variant}
+           COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/power_balance.py
+                   $<TARGET_FILE:flowform> ${case} ${CMAKE_CURRENT_BINARY_DIR}/power_${variant} ram ${extra})
+  set_tests_properties(power_balance_${variant} PROPERTIES LABELS "regression")
+endforeach()
