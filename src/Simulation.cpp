@@ -77,6 +77,29 @@ void requirePositive(const ParameterList& list, const std::string& name, const s
     throw InputError(where + "/" + name + " must be > 0 (got " + Teuchos::toString(v) + ")");
 }
 
+/// Nodes shared by two walls where the material's angle is reflex (a convex tool corner, as
+/// at a die lip): with d the direction along wall a away from the node, the material angle
+/// is reflex when d points to the tool side of wall b (d·n_b > 0). There each wall's
+/// penetration test also needs the other wall's normal (ContactWall::addCornerNormal).
+void markConvexToolCorners(std::vector<ContactWall>& walls) {
+  for (size_t a = 0; a < walls.size(); ++a)
+    for (size_t b = 0; b < walls.size(); ++b) {
+      if (a == b) continue;
+      const BoundaryCurve& ca = walls[a].curve();
+      const BoundaryCurve& cb = walls[b].curve();
+      for (int ka = 0; ka < walls[a].numNodes(); ++ka)
+        for (int kb = 0; kb < walls[b].numNodes(); ++kb) {
+          if (ca.nodes[ka] != cb.nodes[kb]) continue;
+          const int along = walls[a].next(ka) >= 0 ? walls[a].next(ka) : walls[a].previous(ka);
+          if (along < 0) continue;
+          const double dx = walls[a].nodeCoordinates(along)[0] - walls[a].nodeCoordinates(ka)[0];
+          const double dy = walls[a].nodeCoordinates(along)[1] - walls[a].nodeCoordinates(ka)[1];
+          const auto& nb = cb.normals[kb];
+          if (dx * nb[0] + dy * nb[1] > 0.0) walls[a].addCornerNormal(ka, nb);
+        }
+    }
+}
+
 }  // namespace
 
 Teuchos::RCP<const ParameterList> Simulation::validParameters() {
@@ -191,6 +214,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
     const auto pairs = m_walls.back().couplings();
     couplings.insert(couplings.end(), pairs.begin(), pairs.end());
   }
+  markConvexToolCorners(m_walls);
   m_responses = std::make_unique<Responses>(m_params.sublist("Responses"), m_mesh);
 
   m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings);

@@ -1,5 +1,7 @@
 #include "flowform/contact/ContactWall.hpp"
 
+#include <algorithm>
+
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/InputError.hpp"
@@ -65,6 +67,7 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   m_curve = buildBoundaryCurve(mesh, mesh.boundary(group));
   m_active.assign(m_curve.nodes.size(), m_settings.initiallyActive);
   m_changes.assign(m_curve.nodes.size(), 0);
+  m_cornerNormals.resize(m_curve.nodes.size());
   m_viscosity.assign(m_curve.nodes.size(), 1.0);
   m_flowStress.assign(m_curve.nodes.size(), 1.0);
   for (GO node : m_curve.nodes) m_coords.push_back(mesh.coords[node]);
@@ -94,6 +97,8 @@ StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::ve
     } else {
       const auto& n = m_curve.normals[k];
       violation = u[k][0] * n[0] + u[k][1] * n[1] - penetrationTolerance;  // moving into the tool
+      for (const auto& other : m_cornerNormals[k])  // convex tool corner: into every half-plane
+        violation = std::min(violation, u[k][0] * other[0] + u[k][1] * other[1] - penetrationTolerance);
     }
     if (!(violation > 0.0)) continue;
     if (m_changes[k] >= maxChangesPerNode) {

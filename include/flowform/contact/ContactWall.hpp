@@ -77,9 +77,16 @@ class ContactWall {
     ++m_changes[k];
   }
   int changes(int k) const { return m_changes[k]; }
+  const std::array<double, 2>& nodeCoordinates(int k) const { return m_coords[k]; }
   /// Wall neighbours of node k (−1 where the wall ends).
   int previous(int k) const { return k > 0 ? k - 1 : (m_curve.closed ? numNodes() - 1 : -1); }
   int next(int k) const { return k + 1 < numNodes() ? k + 1 : (m_curve.closed ? 0 : -1); }
+
+  /// At a node this wall shares with another wall at a convex tool corner (the material's
+  /// angle there is reflex, like the die lip), material moving along the other wall is not
+  /// entering the tool: a free node penetrates only if u·n > tolerance for this wall's normal
+  /// AND for each normal added here (the tool is the intersection of the half-planes).
+  void addCornerNormal(int k, const std::array<double, 2>& otherNormal) { m_cornerNormals[k].push_back(otherNormal); }
 
   /// Per wall node: viscosity μ and flow stress σ̄ (largest over the adjacent cells).
   void setScales(std::vector<double> viscosity, std::vector<double> flowStress);
@@ -115,6 +122,7 @@ class ContactWall {
   Geometry m_geometry;
   std::vector<char> m_active;
   std::vector<int> m_changes;
+  std::vector<std::vector<std::array<double, 2>>> m_cornerNormals;
   std::vector<double> m_viscosity, m_flowStress;
   std::vector<std::array<double, 2>> m_coords;
 };
