@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 
 #include <NOX.H>
 #include <NOX_Observer.hpp>
@@ -112,7 +113,13 @@ double NonlinearSolver::linearSolve(Vector& x, const FlowPhysics& physics) {
   m_model.setPhysics(physics);
   Vector f(x.getMap()), dx(x.getMap());
   m_model.residual(x, f);
-  m_model.computeJacobian(x);
+  try {
+    m_model.computeJacobian(x);
+  } catch (const std::exception& e) {
+    // A singular matrix: reported as not converged (NaN residual), never an abort.
+    log() << "  linear solve failed: " << e.what() << "\n";
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   m_model.solve(f, dx);
   x.update(-1.0, dx, 1.0);
   m_model.residual(x, f);
@@ -198,10 +205,13 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target) {
   FlowPhysics stokes = target;
   stokes.material.yieldStress = 0.0;
   stokes.material.rateExponent = 1.0;
+  const Vector xStart(x, Teuchos::Copy);
   const double predictorResidual = linearSolve(x, stokes);
   log() << "  Newtonian predictor: |F| = " << std::scientific << std::setprecision(3) << predictorResidual
         << std::defaultfloat << "\n";
-  if (!isFinite(x)) {
+  if (!std::isfinite(predictorResidual) || !isFinite(x)) {
+    Tpetra::deep_copy(x, xStart);
+    m_model.setPhysics(target);
     report.message = "the Newtonian predictor produced a non-finite solution (singular Jacobian?)";
     return report;
   }
