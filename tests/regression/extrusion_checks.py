@@ -45,7 +45,6 @@ import numpy as np
 
 WALLS = ("container", "die_face", "die_land")
 RAM_CORNER = (-1.5, 1.0)  # the ram meets the container here (meshes/extrusion.geo, Lc = 1.5)
-DEFAULT_NORMAL_PENALTY = 1e3  # ContactWall::validParameters
 SLIP_LINE_R2 = 0.5 + math.pi / 4  # Hill's frictionless square-die value of p/2k for R = 2
 RIGID_TRIANGLE_R2 = math.sqrt(2.0)  # the best single-triangle upper bound (derived in the doc)
 
@@ -316,25 +315,6 @@ def stabilization_power(run):
     return float((area * beta * hK**2 / (2 * mu) * (px**2 + py**2)).sum())
 
 
-def penalty_power_estimate(run):
-    """Σ_active κ_n μ_k u_n² with μ_k the largest adjacent cell viscosity of the *final* solution.
-
-    The solver holds μ_k from the start of the last Newton solve, so this is an estimate.
-    """
-    X, T, _, _, mu, _ = p1_mesh(run)
-    numax = np.zeros(len(X))
-    for a in range(3):
-        np.maximum.at(numax, T[:, a], mu)
-    index = {(round(x, 9), round(y, 9)): i for i, (x, y) in enumerate(X)}
-    total = 0.0
-    for w in WALLS:
-        kappa = run.params["Boundary Conditions"][w].get("Normal Penalty Factor", DEFAULT_NORMAL_PENALTY)
-        for r in run.wall(w):
-            if r["contact_status"] == 1.0:
-                total += kappa * numax[index[(round(r["x"], 9), round(r["y"], 9))]] * r["u_n"] ** 2
-    return total
-
-
 def effective_flow_stress(run):
     """σ̄_eff = ∫ σ̄(e_r) e dΩ / ∫ e dΩ (the law at the cell strain rates), and the σ̄ range over 99 % of it."""
     X, T, _, _, _, e = p1_mesh(run)
@@ -364,6 +344,7 @@ def ram_corner_friction(run, group="container"):
 
 
 def observed_order(F, ratio=2.0):
+    """Orders from consecutive triples of a sequence on meshes refined by `ratio` each time."""
     d = np.diff(F)
     return [math.log(abs(d[i] / d[i + 1])) / math.log(ratio) if d[i + 1] != 0 else float("inf")
             for i in range(len(d) - 1)]
@@ -417,9 +398,18 @@ def cmd_contact(runner, args, checks):
 
 
 def cmd_power(runner, args, checks):
-    meshes = mesh_list(args.meshes, "0.2,0.1")
+    """Ram power vs plastic + friction dissipation: the mismatch is what the discretization adds.
+
+    Exactly (the discrete identity, docs/extrusion_verification.md §2):
+        ram power = plastic + friction + stabilization + penalty power.
+    The stabilization and penalty terms are discretization artefacts (τ_K ∝ h_K², α_n ∝ 1/u_n
+    penetration), so (ram − plastic − friction)/ram must shrink under refinement.
+    """
+    meshes = mesh_list(args.meshes, "0.2,0.1,0.05")
     nus = (0.0, 0.1)
-    specs = [(f"h = {h}, nu = {nu}", dict(name=f"power_nu{nu}_h{h}", h=h, nu=nu)) for nu in nus for h in meshes]
+    extra = ["Responses/stabilization_power/Type=Stabilization Power", "Responses/penalty_power/Type=Penalty Power"]
+    specs = [(f"h = {h}, nu = {nu}", dict(name=f"power_nu{nu}_h{h}", h=h, nu=nu, sets=extra))
+             for nu in nus for h in meshes]
     runs = dict(zip([(nu, h) for nu in nus for h in meshes], runner.run_all(specs, checks)))
     table = []
     for nu in nus:
@@ -431,39 +421,59 @@ def cmd_power(runner, args, checks):
                 continue
             F, BP = run.force, run.f("ram_power")
             PP, FP = run.f("plastic_power"), run.f("friction_power")
-            S = stabilization_power(run)
-            remainder = BP - PP - FP - S  # the penalty power Σ α_n u_n² >= 0
-            estimate = penalty_power_estimate(run)
+            S, Pi = run.f("stabilization_power"), run.f("penalty_power")
+            S_h5 = stabilization_power(run)
             m = (BP - PP - FP) / BP
             mismatch.append(m)
             table.append(dict(nu=nu, h=h, ram_force=F, ram_power=BP, plastic=PP, friction=FP, stabilization=S,
-                              penalty=remainder, penalty_estimate=estimate, mismatch=m))
+                              stabilization_from_h5=S_h5, penalty=Pi, mismatch=m))
             print(f"    nu = {nu} h = {h}: ram power {BP:.6f} = plastic {PP:.6f} + friction {FP:.6f} + "
-                  f"stabilization {S:.6f} + penalty {remainder:.3e} (estimate {estimate:.3e}); "
+                  f"stabilization {S:.6f} (from solution.h5 {S_h5:.6f}) + penalty {Pi:.3e}; "
                   f"(ram - plastic - friction)/ram = {m:.4%}")
             checks.check(abs(F * 1.0 - BP) <= 1e-12 * abs(BP) and abs(run.f("ram_pressure") - F / 1.0) <= 1e-12 * abs(F),
                          f"{run.label}: ram force x ram speed 1 = ram power = ram pressure x ram length 1 "
                          f"({F:.12g}, {BP:.12g})")
-            checks.check(-1e-7 * BP <= remainder <= 5e-3 * BP,
-                         f"{run.label}: ram - plastic - friction - stabilization power = {remainder / BP:.2e} of "
-                         f"the ram power, in [-1e-7, 5e-3] (the penalty power, >= 0 and small)")
-            checks.check(estimate > 0 and 0.5 <= remainder / estimate <= 2.0,
-                         f"{run.label}: that remainder / Σ κ_n μ u_n² over the active nodes = {remainder / max(estimate, 1e-300):.3f} "
-                         f"in [0.5, 2] (μ of the final solution; the solver holds μ from the start of its last solve)")
-            checks.check(m > 0, f"{run.label}: mismatch {m:.4%} > 0 (stabilization and penalty dissipate)")
+            # |F| <= 1e-10 at convergence bounds the identity's error by ~1e-9 of the ram power.
+            identity = (BP - PP - FP - S - Pi) / BP
+            checks.check(abs(identity) <= 1e-8, f"{run.label}: ram - plastic - friction - stabilization - penalty "
+                                                f"power = {identity:.1e} of the ram power (|.| <= 1e-8)")
+            # An independent recomputation of Σ τ_K |∇p|² |K| from the written fields (P1: ∇p constant
+            # per cell; τ_K from the written centroid viscosity): it must agree to round-off.
+            checks.check(abs(S_h5 - S) <= 1e-6 * abs(S), f"{run.label}: stabilization power from solution.h5 "
+                                                         f"{S_h5:.8f} = the response {S:.8f} (rel. 1e-6)")
+            checks.check(Pi > 0 and S > 0, f"{run.label}: penalty {Pi:.2e} > 0 and stabilization {S:.2e} > 0 dissipate")
         done = [(h, m) for h, m in zip(meshes, mismatch) if m is not None]
         for (h1, m1), (h2, m2) in zip(done, done[1:]):
             rate = math.log(m1 / m2) / math.log(h1 / h2)
             checks.check(m1 / m2 >= 1.4, f"nu = {nu}: mismatch {m1:.4%} (h = {h1}) -> {m2:.4%} (h = {h2}), "
-                                         f"ratio {m1 / m2:.2f} >= 1.4 (observed order {rate:.2f})")
+                                         f"ratio {m1 / m2:.2f} >= 1.4 (observed order {rate:.2f} >= 0.5)")
         if any(h == 0.1 for h, _ in done):
             m01 = dict(done)[0.1]
-            checks.check(m01 < 0.05, f"nu = {nu}: mismatch at h = 0.1 is {m01:.4%} < 5%")
+            checks.check(0 < m01 < 0.03, f"nu = {nu}: mismatch at h = 0.1 is {m01:.4%}, in (0, 3%)")
     checks.record("table", table)
 
 
+def outlet_flux(run):
+    """∫ u·n ds over the outlet (P1: the trapezoid rule is exact); the ram feeds 1."""
+    rows = sorted(run.wall("outlet"), key=lambda r: r["s"])
+    s, un = np.array([r["s"] for r in rows]), np.array([r["u_n"] for r in rows])
+    return float(np.sum(0.5 * (un[1:] + un[:-1]) * np.diff(s)))
+
+
 def cmd_convergence(runner, args, checks):
-    meshes = mesh_list(args.meshes, "0.4,0.2,0.1")
+    """Ram force on meshes h_0 > h_1 > ... with a constant ratio r = h_j/h_{j+1}.
+
+    The observed order from three consecutive meshes, q = ln(d_j/d_{j+1})/ln r (d the
+    differences of F), and the Richardson estimate F_R = F_fine + d_last/(r^q − 1).
+    Also the mass that leaves through the die face next to the die lip: the lip is a re-entrant
+    corner of the material where the exit speed meets the die face, so the first die-face
+    segment (length hc) carries a flux ~ hc × exit speed/2: 1 − outlet flux must be O(h).
+    """
+    meshes = mesh_list(args.meshes, "0.2,0.1,0.05")
+    ratios = [a / b for a, b in zip(meshes, meshes[1:])]
+    ratio = ratios[0]
+    if len(meshes) < 3 or any(abs(q / ratio - 1) > 0.01 for q in ratios) or ratio < 1.2:
+        raise ValueError(f"convergence needs >= 3 meshes with one ratio >= 1.2 (got {meshes})")
     nus = [float(v) for v in (args.nu or "0.0,0.1").split(",")]
     specs = [(f"h = {h}, nu = {nu}", dict(name=f"conv_nu{nu}_h{h}", h=h, nu=nu)) for nu in nus for h in meshes]
     allruns = runner.run_all(specs, checks)
@@ -474,27 +484,39 @@ def cmd_convergence(runner, args, checks):
             continue
         F = [r.force for r in runs]
         d = np.diff(F)
-        entry = {"h": meshes, "ram_force": F, "differences": d.tolist(),
+        leak = [1.0 - outlet_flux(r) for r in runs]
+        orders = observed_order(F, ratio)
+        extrapolated = [richardson(F[: j + 3], orders[j], ratio) for j in range(len(orders))]
+        entry = {"h": meshes, "ratio": ratio, "ram_force": F, "differences": d.tolist(), "orders": orders,
+                 "richardson": extrapolated, "leak": leak,
                  "dofs": [r.summary["dofs"] for r in runs], "seconds": [r.seconds for r in runs],
                  "newton": [r.summary["newton_iterations"] for r in runs],
                  "contact_changes": [r.summary["contact_changes"] for r in runs]}
         print(f"    nu = {nu}: F = " + ", ".join(f"{f:.6f}" for f in F) + "; differences " +
               ", ".join(f"{x:+.6f}" for x in d))
+        print(f"    nu = {nu}: observed orders " + ", ".join(f"{q:.3f}" for q in orders) +
+              "; Richardson " + ", ".join(f"{x:.5f}" for x in extrapolated))
+        print(f"    nu = {nu}: 1 - outlet flux = " + ", ".join(f"{x:.5f}" for x in leak))
+        checks.check(all(x > 0 for x in d) or all(x < 0 for x in d),
+                     f"nu = {nu}: the ram force changes monotonically under refinement")
         for j in range(len(d) - 1):
             checks.check(abs(d[j + 1]) < abs(d[j]), f"nu = {nu}: |F(h={meshes[j + 1]}) - F(h={meshes[j + 2]})| = "
                                                     f"{abs(d[j + 1]):.5f} < {abs(d[j]):.5f} (the previous difference)")
-        checks.check(all(x < 0 for x in d), f"nu = {nu}: the ram force decreases under refinement")
-        if len(F) >= 3 and all(abs(meshes[j] / meshes[j + 1] - 2.0) < 1e-9 for j in range(len(meshes) - 1)):
-            orders = observed_order(F)
-            extrapolated = [richardson(F[: j + 3], orders[j]) for j in range(len(orders))]
-            entry.update(orders=orders, richardson=extrapolated)
-            print(f"    nu = {nu}: observed orders " + ", ".join(f"{q:.3f}" for q in orders) +
-                  "; Richardson " + ", ".join(f"{x:.5f}" for x in extrapolated))
-            checks.check(orders[-1] > 0, f"nu = {nu}: observed order on the finest three meshes {orders[-1]:.3f} > 0")
-            if len(extrapolated) >= 2:
-                spread = abs(extrapolated[-1] - extrapolated[-2]) / abs(extrapolated[-1])
-                entry["richardson_spread"] = spread
-                checks.note(f"nu = {nu}: the last two Richardson estimates differ by {spread:.3%}")
+        q = orders[-1]
+        checks.check(0.5 <= q <= 2.5, f"nu = {nu}: observed order on the finest three meshes {q:.3f} in [0.5, 2.5] "
+                                      f"(P1 velocity: <= 2; the re-entrant die lip: about 1)")
+        error = abs(F[-1] - extrapolated[-1]) / abs(extrapolated[-1])
+        entry["finest_error_estimate"] = error
+        if len(extrapolated) >= 2:  # four meshes or more: is the extrapolation itself settled?
+            spread = abs(extrapolated[-1] - extrapolated[-2]) / abs(extrapolated[-1])
+            entry["richardson_spread"] = spread
+            checks.check(spread < 0.5 * error, f"nu = {nu}: the last two Richardson estimates differ by {spread:.3%}, "
+                                               f"less than half the finest mesh's estimated error {error:.3%}")
+        leak_orders = [math.log(a / b) / math.log(ratio) for a, b in zip(leak, leak[1:])]
+        entry["leak_orders"] = leak_orders
+        checks.check(all(x > 0 for x in leak) and all(0.7 <= o <= 1.3 for o in leak_orders),
+                     f"nu = {nu}: the die-lip leak 1 - outlet flux > 0 is O(h): orders " +
+                     ", ".join(f"{o:.2f}" for o in leak_orders) + " in [0.7, 1.3]")
         table[str(nu)] = entry
     checks.record("table", table)
 
@@ -640,7 +662,7 @@ def msh_without_corner_segment(text, group, corner):
 
 
 def cmd_sticking(runner, args, checks):
-    meshes = mesh_list(args.meshes, "0.2,0.1")
+    meshes = mesh_list(args.meshes, "0.2,0.1,0.05")
     nu = float(args.nu or 1.0)
     noslip = [("Type", "string", "Velocity"), ("Velocity X", "double", "0.0"), ("Velocity Y", "double", "0.0")]
     specs = []
@@ -681,19 +703,29 @@ def cmd_sticking(runner, args, checks):
         dP = (contact.f("plastic_power") - two.f("plastic_power")) / two.f("plastic_power")
         print(f"    h = {h}: contact F = {Fc:.6f} (ram-corner friction {corner:.6f}), no-slip container+die_face "
               f"F = {F2:.6f}, no-slip everywhere F = {F3:.6f}")
-        checks.check(abs(dF) < 0.02, f"h = {h}: ν = {nu:g} ram force less the ram-corner friction vs no-slip container "
-                                     f"and die face: {dF:+.2%} (< 2%)")
-        checks.check(abs(dP) < 0.05, f"h = {h}: plastic power {contact.f('plastic_power'):.5f} vs "
-                                     f"{two.f('plastic_power'):.5f}: {dP:+.2%} (< 5%, the sticking penalty's slip)")
+        print(f"    h = {h}: gaps (contact - no-slip)/no-slip: force less the ram-corner friction {dF:+.3%}, "
+              f"plastic power {dP:+.3%}")
         checks.check(F3 > 1.5 * Fc, f"h = {h}: a no-slip die land is another problem: F = {F3:.4f} vs {Fc:.4f} "
                                     f"(Coulomb friction vanishes on the nearly stress-free exit plug)")
         table.append(dict(h=h, nu=nu, contact=Fc, ram_corner_friction=corner, noslip_container_dieface=F2,
                           noslip_all=F3, force_gap=dF, plastic_gap=dP,
                           plastic_contact=contact.f("plastic_power"), plastic_noslip=two.f("plastic_power")))
+    # Both gaps are corner effects of one element: the ram-corner node slides at the ram speed
+    # (contact: Coulomb friction ν p L/2 there, subtracted; no-slip: a one-element shear band) and
+    # the sticking penalty lets the nodes next to it slip by ~ their share of 1/κ_t. So they are
+    # O(h): they must shrink, and their Richardson extrapolation to h = 0 must vanish.
     for a, b in zip(table, table[1:]):
-        checks.check(abs(b["force_gap"]) < abs(a["force_gap"]) and abs(b["plastic_gap"]) < abs(a["plastic_gap"]),
-                     f"the gaps shrink with h: force {a['force_gap']:+.2%} -> {b['force_gap']:+.2%}, plastic power "
-                     f"{a['plastic_gap']:+.2%} -> {b['plastic_gap']:+.2%} (h = {a['h']} -> {b['h']})")
+        for key in ("force_gap", "plastic_gap"):
+            checks.check(abs(b[key]) * 1.4 <= abs(a[key]), f"{key}: {a[key]:+.2%} -> {b[key]:+.2%} "
+                         f"(h = {a['h']} -> {b['h']}): shrinks by a factor >= 1.4")
+    if len(table) >= 3 and all(abs(a["h"] / b["h"] - 2.0) < 1e-9 for a, b in zip(table, table[1:])):
+        for key in ("force_gap", "plastic_gap"):
+            gaps = [t[key] for t in table]
+            q = observed_order(gaps)[-1]
+            limit = richardson(gaps, q)
+            checks.record(f"{key}_extrapolated", dict(order=q, value=limit))
+            checks.check(abs(limit) < 0.01, f"{key}: observed order {q:.2f}, extrapolated to h = 0: {limit:+.3%} "
+                                            f"(|.| < 1%: large ν reaches the no-slip wall)")
     checks.record("table", table)
 
 
