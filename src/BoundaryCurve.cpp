@@ -35,7 +35,15 @@ std::vector<std::array<GO, 2>> directedEdges(const Mesh& mesh, const BoundaryGro
   const int npc = nodesPerCell(mesh.cellType);
   // Every cell edge keyed by its sorted node pair -> the cell's own direction, and a count.
   std::map<std::array<GO, 2>, std::pair<std::array<GO, 2>, int>> cellEdges;
-  for (const auto& e : group.edges) cellEdges[{std::min(e[0], e[1]), std::max(e[0], e[1])}];
+  for (const auto& e : group.edges) {
+    // A segment of zero length has no normal and no lumping weight: reject it by name.
+    const auto& a = mesh.coords[e[0]];
+    const auto& b = mesh.coords[e[1]];
+    if (e[0] == e[1] || (a[0] == b[0] && a[1] == b[1]))
+      throw InputError(where(mesh, group) + ": zero-length segment from " + nodeLabel(mesh, e[0]) + " to " +
+                       nodeLabel(mesh, e[1]) + "; every boundary segment must join two distinct points");
+    cellEdges[{std::min(e[0], e[1]), std::max(e[0], e[1])}];
+  }
   for (GO c = 0; c < mesh.numCells(); ++c) {
     const GO* nodes = mesh.cell(c);
     for (int i = 0; i < npc; ++i) {

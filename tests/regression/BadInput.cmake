@@ -117,6 +117,18 @@ flowform_exit_test(bad_input_missing_group CASE missing_group.xml
 flowform_exit_test(bad_input_inverted_cell CASE inverted.xml
   CONTAINS "inverted" "unit_square_flipped.msh")
 
+# --- contact walls (bad_input/contact_small.xml: the top of the unit square is a Coulomb wall) ----
+flowform_exit_test(regression_good_contact_small CASE contact_small.xml STATUS 0 CONVERGED)
+flowform_exit_test(bad_input_contact_wall_missing_group CASE contact_small.xml
+  SET "Boundary Conditions/nosuch_wall/Type=Contact Wall"
+  CONTAINS "nosuch_wall" "no boundary group")
+flowform_exit_test(bad_input_friction_coefficient_negative CASE contact_small.xml
+  SET "Boundary Conditions/top/Friction Coefficient=-0.1"
+  CONTAINS "Friction Coefficient" "top")
+flowform_exit_test(bad_input_contact_wall_zero_length_segment CASE contact_small.xml
+  SET "Mesh/File=../../data/unit_square_zero_segment.msh"
+  CONTAINS "top" "zero-length segment" "unit_square_zero_segment.msh")
+
 # --- command line ------------------------------------------------------------------------------
 flowform_exit_test(bad_input_unknown_option CASE channel_small.xml
   ARGS --no-such-option
