@@ -24,7 +24,8 @@ numbers to OUTDIR/<subcommand>.json and exits 1 when a check failed. Each run's 
   sticking            large ν vs no-slip (Velocity 0) container and die face
   monotone            ram force increases with ν ∈ {0, 0.05, 0.1, 0.2, 0.3, 0.5}
   theory              ν = 0, n = 20: ln R <= p/2k <= √2 (rigid-triangle upper bound), and with
-                      3 or more meshes the extrapolation against Hill's slip-line value 1/2 + π/4
+                      2 or more meshes the two finest against each other and against Hill's
+                      slip-line value 1/2 + π/4
 
 Debian's /usr/bin/python3 (numpy, h5py). `gmsh` (the command) for `sticking` only.
 """
@@ -764,21 +765,19 @@ def cmd_theory(runner, args, checks):
               f"p/2k = {ratio:.5f}")
         table.append(dict(h=h, ram_pressure=p, sigma_eff=sbar, sigma_lo=lo, sigma_hi=hi, p_over_2k=ratio))
         checks.check(lower <= ratio <= upper, f"h = {h}: ln 2 = {lower:.4f} <= p/2k = {ratio:.4f} <= √2 = {upper:.4f}")
+    # Two first-order errors of opposite sign meet here (docs/extrusion_verification.md §3, §6):
+    # the bulk discretization over-estimates p (upper-bound like), the die-lip leak (∝ hc)
+    # under-estimates it, so p/2k is not monotone in h and Richardson extrapolation does not
+    # apply. Checked instead: the two finest meshes agree, and both are near Hill's value.
     if len(ratios) >= 2:
-        checks.check(all(b < a for (_, a), (_, b) in zip(ratios, ratios[1:])),
-                     "p/2k decreases under refinement (towards the slip-line value from above)")
-    if len(ratios) >= 3:
-        R = [r for _, r in ratios]
-        hs = [h for h, _ in ratios]
-        if all(abs(hs[j] / hs[j + 1] - 2.0) < 1e-9 for j in range(len(hs) - 1)):
-            q = observed_order(R)[-1]
-            extrapolated = richardson(R, q)
-            dev = (extrapolated - SLIP_LINE_R2) / SLIP_LINE_R2
-            print(f"    observed order {q:.3f}, Richardson p/2k = {extrapolated:.5f}; Hill's slip-line "
-                  f"1/2 + π/4 = {SLIP_LINE_R2:.5f} ({dev:+.2%})")
-            checks.record("richardson", dict(order=q, value=extrapolated, deviation=dev))
-            checks.check(abs(dev) < 0.02, f"Richardson p/2k {extrapolated:.4f} within 2% of the slip-line value "
-                                          f"{SLIP_LINE_R2:.4f} ({dev:+.2%})")
+        (h1, r1), (h2, r2) = ratios[-2], ratios[-1]
+        change = abs(r2 - r1) / r2
+        checks.record("finest_change", change)
+        checks.check(change < 0.01, f"p/2k changes by {change:.2%} from h = {h1} to h = {h2} (< 1%)")
+        for h, r in ratios[-2:]:
+            dev = (r - SLIP_LINE_R2) / SLIP_LINE_R2
+            checks.check(abs(dev) < 0.02, f"h = {h}: p/2k = {r:.4f} within 2% of Hill's slip-line value "
+                                          f"1/2 + π/4 = {SLIP_LINE_R2:.4f} ({dev:+.2%})")
     checks.record("table", table)
 
 
