@@ -14,25 +14,6 @@ namespace {
 /// The "ParamDeriv"/tangent evaluation type: one directional derivative.
 using TangentFad = Sacado::Fad::SFad<double, 1>;
 
-/// Input of an evaluation: the value (Residual), or the value with its derivative along
-/// the direction (tangent). Output: the value, or the derivative.
-inline void setInput(double& s, double value, double) { s = value; }
-inline void setInput(TangentFad& s, double value, double derivative) { s = dual<TangentFad>(value, derivative); }
-inline double output(double s) { return s; }
-inline double output(const TangentFad& s) { return s.dx(0); }
-
-template <typename Scalar>
-MaterialParameters<Scalar> materialFor(const MaterialParameters<double>& m, const SensitivityParameter* h) {
-  if constexpr (std::is_same_v<Scalar, double>) return m;
-  else return seededMaterial<Scalar>(m, h);
-}
-
-template <typename Scalar>
-FrictionParameters<Scalar> frictionFor(const ContactWall& wall, int w, const SensitivityParameter* h) {
-  if constexpr (std::is_same_v<Scalar, double>) return wall.frictionParameters();
-  else return seededFriction<Scalar>(wall, w, h);
-}
-
 /// Integration order of the flow kernel: P1 in plane strain has constant integrands (one
 /// point is exact); the axisymmetric terms (u_r/r, 2πr) and Q1 need the 3-point / 2×2 rules.
 int integrationOrder(CellType type, Geometry geometry) {

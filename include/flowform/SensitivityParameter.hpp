@@ -13,6 +13,7 @@
 #pragma once
 
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "flowform/Material.hpp"
@@ -78,6 +79,30 @@ T dual(double value, double derivative) {
   T t(1, value);
   t.fastAccessDx(0) = derivative;
   return t;
+}
+
+/// The two evaluation types that share one templated loop: Residual (double: values) and
+/// tangent (T: x seeded along a direction dx, h seeded). Input: the value, and for T its
+/// derivative; output: the value, or the derivative.
+template <typename Scalar>
+void setInput(Scalar& s, double value, double derivative) {
+  if constexpr (std::is_same_v<Scalar, double>) s = value;
+  else s = dual<Scalar>(value, derivative);
+}
+template <typename Scalar>
+double output(const Scalar& s) {
+  if constexpr (std::is_same_v<Scalar, double>) return s;
+  else return s.dx(0);
+}
+template <typename Scalar>
+MaterialParameters<Scalar> materialFor(const MaterialParameters<double>& m, const SensitivityParameter* h) {
+  if constexpr (std::is_same_v<Scalar, double>) return m;
+  else return seededMaterial<Scalar>(m, h);
+}
+template <typename Scalar>
+FrictionParameters<Scalar> frictionFor(const ContactWall& wall, int w, const SensitivityParameter* h) {
+  if constexpr (std::is_same_v<Scalar, double>) return wall.frictionParameters();
+  else return seededFriction<Scalar>(wall, w, h);
 }
 
 }  // namespace flowform
