@@ -4,3 +4,4 @@
 flowform_unit_test(SensitivityTest unit/SensitivityTest.cpp)
 flowform_unit_test(SensitivityTest unit/SensitivityTest.cpp NP 2)
 set_tests_properties(SensitivityTest SensitivityTest_np2 PROPERTIES TIMEOUT 300)
+target_compile_definitions(SensitivityTest PRIVATE FLOWFORM_SOURCE_DIR="${FLOWFORM_SOURCE_DIR}")

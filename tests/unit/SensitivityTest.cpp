@@ -19,7 +19,10 @@
 #include "flowform/InputError.hpp"
 #include "flowform/Log.hpp"
 #include "flowform/SensitivityParameter.hpp"
+#include "flowform/Simulation.hpp"
 #include "flowform/contact/StatusLoop.hpp"
+
+#include <Teuchos_XMLParameterListHelpers.hpp>
 
 namespace {
 
@@ -251,6 +254,61 @@ TEUCHOS_UNIT_TEST(Sensitivity, TangentIsJacobianTimesDirectionPlusParameterDeriv
     const double scale = std::max(jv->normInf(), dh->normInf());
     out << cellTypeName(type) << ": |tangent − Jv − dR/dh| / scale = " << t->normInf() / scale << "\n";
     TEST_COMPARE(t->normInf(), <=, 1e-12 * scale);
+  }
+}
+
+TEUCHOS_UNIT_TEST(Sensitivity, ExtrusionFrictionSensitivityIsExactlyZeroInStickAndTension) {
+  // Paper eq. 28 on a converged extrusion (h = 0.2): ν enters R only through the friction of
+  // slipping wall nodes, so ∂R/∂ν is exactly 0 (not to round-off) in every row but those —
+  // at sticking nodes (ν = 0.3: the container and die face stick near the dead zone) and at
+  // nodes without compression (ν = 0: the die-land nodes near the exit corner are in
+  // tension); at slipping nodes it is f̂/ν = P_k (nonzero also at ν = 0).
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  setLogEnabled(false);
+  for (double nu : {0.0, 0.3}) {
+    auto params = Teuchos::getParametersFromXmlFile(FLOWFORM_SOURCE_DIR "/xml/extrusion.xml");
+    params->sublist("Mesh").sublist("Geo Parameters").set("h", 0.2);
+    params->sublist("Mesh").sublist("Geo Parameters").set("hc", 0.05);
+    for (const char* wall : {"container", "die_face", "die_land"})
+      params->sublist("Boundary Conditions").sublist(wall).set("Friction Coefficient", nu);
+    Simulation sim(*params, FLOWFORM_SOURCE_DIR "/xml", comm);
+    TEST_ASSERT(sim.run().converged);
+    const auto& walls = sim.contactWalls();
+    const ContactStatusLoop loop(sim.parameters().sublist("Contact"), sim.mesh(), sim.dofMap());
+    const auto branches = loop.branches(walls, sim.solution());
+    // Per node: does any wall through it slip there?
+    std::vector<int> slips(sim.mesh().numNodes(), 0), walled(sim.mesh().numNodes(), 0);
+    int count[5] = {0, 0, 0, 0, 0};
+    for (size_t w = 0; w < walls.size(); ++w)
+      for (int k = 0; k < walls[w].numNodes(); ++k) {
+        const GO node = walls[w].curve().nodes[k];
+        walled[node] = 1;
+        slips[node] |= branches[w][k] == FrictionBranch::Slip;
+        ++count[static_cast<int>(branches[w][k])];
+      }
+    Vector d(sim.dofMap().ownedMap());
+    sim.model().assembler().parameterDerivative(sim.solution(), parseSensitivityParameter("Friction Coefficient", walls),
+                                                d);
+    auto v = d.getLocalViewHost(Tpetra::Access::ReadOnly);
+    int nonzeroWithoutSlip = 0, nonzeroAtSlip = 0, zeroWallRows = 0;
+    for (LO n = 0; n < sim.dofMap().numOwnedNodes(); ++n) {
+      const GO node = sim.dofMap().overlapNodes()[n];
+      const bool nonzero = v(kDofsPerNode * n + kUx, 0) != 0.0 || v(kDofsPerNode * n + kUy, 0) != 0.0 ||
+                           v(kDofsPerNode * n + kP, 0) != 0.0;
+      if (slips[node]) nonzeroAtSlip += nonzero;
+      else nonzeroWithoutSlip += nonzero;
+      zeroWallRows += walled[node] && !slips[node] && !nonzero;
+    }
+    int local[3] = {nonzeroWithoutSlip, nonzeroAtSlip, zeroWallRows}, global[3];
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 3, local, global);
+    out << "ν = " << nu << ": wall nodes free " << count[0] << ", no friction " << count[1] << ", stick " << count[2]
+        << ", slip " << count[3] << "; nonzero rows of dR/dν at slip nodes " << global[1]
+        << ", elsewhere " << global[0] << "; exactly zero at non-slipping wall nodes " << global[2] << "\n";
+    TEST_EQUALITY_CONST(global[0], 0);
+    TEST_COMPARE(global[1], >, 0);
+    TEST_COMPARE(global[2], >, 0);
+    if (nu == 0.3) TEST_COMPARE(count[static_cast<int>(FrictionBranch::Stick)], >, 0);
+    if (nu == 0.0) TEST_COMPARE(count[static_cast<int>(FrictionBranch::NoFriction)] + count[0], >, 0);
   }
 }
 
