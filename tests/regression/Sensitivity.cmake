@@ -1,0 +1,16 @@
+# Sensitivity analysis (SPEC §4): DDM against the built-in finite-difference check on the
+# channel (du/dσ0, du/dn) and the extrusion (dF/dν at several ν), the one-sided flag at a
+# stick/slip switch, and what a run without sensitivities costs. Each test is one subcommand
+# of regression/sensitivity_checks.py (tolerances justified there and in docs/sensitivity.md).
+set(FLOWFORM_PYTHON /usr/bin/python3)  # Debian's, with h5py
+foreach(sub channel extrusion one-sided no-work)
+  add_test(NAME sensitivity_${sub}
+           COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/sensitivity_checks.py ${sub}
+                   $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/sensitivity/${sub})
+  set_tests_properties(sensitivity_${sub} PROPERTIES LABELS "regression" TIMEOUT 300)
+endforeach()
+# The checker can fail: with δ = 5 % of σ0 and n the truncation error is far above 1e-5.
+add_test(NAME sensitivity_channel_coarse_step_fails
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/sensitivity_checks.py channel
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/sensitivity/coarse --step 0.05)
+set_tests_properties(sensitivity_channel_coarse_step_fails PROPERTIES LABELS "regression" WILL_FAIL TRUE TIMEOUT 300)
