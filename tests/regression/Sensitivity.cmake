@@ -14,3 +14,14 @@ add_test(NAME sensitivity_channel_coarse_step_fails
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/sensitivity_checks.py channel
                  $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/sensitivity/coarse --step 0.05)
 set_tests_properties(sensitivity_channel_coarse_step_fails PROPERTIES LABELS "regression" WILL_FAIL TRUE TIMEOUT 300)
+# A finite-difference run that does not converge (n − δ = 0 with δ = 100 % of n): exit status
+# 3, the flow solution still reported converged, the check's entries "not_converged".
+add_test(NAME sensitivity_fd_not_converged_exits_3
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_summary.py --expect-exit 3
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR}/xml/channel.xml
+                 ${CMAKE_CURRENT_BINARY_DIR}/sensitivity/fd_not_converged
+                 --set "Mesh/Geo Parameters/N=4" --set "Sensitivity/Parameters={Rate Exponent}"
+                 --set "Sensitivity/Finite Difference Check=true" --set "Sensitivity/Finite Difference Step=1.0"
+                 -- converged=true exit_status=3 sensitivity.finite_difference.all_converged=false
+                    "fd_check.velocity_field.Rate Exponent.status=\"not_converged\"")
+set_tests_properties(sensitivity_fd_not_converged_exits_3 PROPERTIES LABELS "regression" TIMEOUT 300)
