@@ -137,6 +137,7 @@ void FiniteDifferenceCheck::report(nlohmann::json& summary) const {
       nlohmann::json entry = {{"ddm", e.ddm},
                               {"fd", e.fd},
                               {"rel_diff", relativeDifference(e.diff, e.ddm, e.fd)},
+                              {"abs_diff", e.diff},
                               {"fd_forward", e.forward},
                               {"fd_backward", e.backward},
                               {"delta", pr.delta},
