@@ -74,11 +74,11 @@ FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, con
       continue;
     }
 
-    // Kinks: a node whose status or friction branch differs from the base run's.
+    // Kinks: a node whose status, friction branch or pressure sign differs from the base run's.
     bool plusChanged = false, minusChanged = false;
     for (size_t w = 0; w < walls.size(); ++w)
       for (int k = 0; k < walls[w].numNodes(); ++k) {
-        const FrictionBranch b0 = base.branches[w][k], bp = plus.branches[w][k], bm = minus.branches[w][k];
+        const WallNodeState b0 = base.states[w][k], bp = plus.states[w][k], bm = minus.states[w][k];
         if (b0 == bp && b0 == bm) continue;
         plusChanged |= bp != b0;
         minusChanged |= bm != b0;
@@ -124,8 +124,7 @@ void FiniteDifferenceCheck::report(nlohmann::json& summary) const {
     nlohmann::json changed = nlohmann::json::array();
     for (const ChangedNode& c : pr.changed)
       changed.push_back({{"wall", c.wall}, {"node", c.node}, {"x", c.x}, {"y", c.y},
-                         {"base", frictionBranchName(c.base)}, {"minus", frictionBranchName(c.minus)},
-                         {"plus", frictionBranchName(c.plus)}});
+                         {"base", c.base.name()}, {"minus", c.minus.name()}, {"plus", c.plus.name()}});
     runs.push_back({{"parameter", pr.name}, {"value", pr.value}, {"delta", pr.delta}, {"converged", pr.converged},
                     {"message", pr.message}, {"newton_iterations", pr.newtonIterations},
                     {"contact_changes", pr.contactChanges}, {"changed_nodes", changed}});

@@ -278,7 +278,7 @@ void Simulation::runSensitivity() {
     base.converged = true;
     base.x = m_solution;
     base.functionals = m_functionals;
-    base.branches = m_statusLoop->branches(m_walls, *m_solution);
+    base.states = m_statusLoop->states(m_walls, *m_solution);
     m_fdCheck = std::make_unique<FiniteDifferenceCheck>(
         *m_sensitivity, base, m_physics, m_walls, m_mesh,
         [this](const SensitivityParameter& h, double delta) { return solvePerturbed(h, delta); });
@@ -305,7 +305,7 @@ PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double de
   run.x = x;
   if (run.converged) {
     run.functionals = m_responses->evaluate(*x, m_mesh, *m_dofMap, *m_assembler, m_walls);
-    run.branches = m_statusLoop->branches(m_walls, *x);
+    run.states = m_statusLoop->states(m_walls, *x);
   }
   m_walls = saved;
   m_model->setPhysics(m_physics);

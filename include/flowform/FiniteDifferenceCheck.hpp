@@ -5,8 +5,9 @@
 //     φ'_FD = (φ(h + δ) − φ(h − δ)) / (2δ)
 //
 // of every response and of the velocity and pressure fields, compared with the DDM value.
-// Where the contact status or the friction branch (stick, slip, no friction) of any wall
-// node differs between the base run and the run at h + δ or h − δ, the function has a kink
+// Where the contact status, the friction branch (stick, slip, no friction) or the sign of
+// the pressure (p⁺ in ν p⁺) of any wall node differs between the base run and the run at
+// h + δ or h − δ, the function has a kink
 // within [h − δ, h + δ]: the entry says one_sided and lists the nodes that changed, and the
 // one-sided difference on the side where nothing changed is reported too.
 //
@@ -26,6 +27,7 @@
 #include "flowform/Sensitivity.hpp"
 #include "flowform/TpetraTypes.hpp"
 #include "flowform/contact/ContactWall.hpp"
+#include "flowform/contact/StatusLoop.hpp"
 
 namespace flowform {
 
@@ -35,7 +37,7 @@ struct PerturbedRun {
   std::string message;
   Teuchos::RCP<const Vector> x;
   std::map<std::string, double> functionals;
-  std::vector<std::vector<FrictionBranch>> branches;  ///< [wall][node]
+  std::vector<std::vector<WallNodeState>> states;  ///< [wall][node]
   int newtonIterations = 0;
   int contactChanges = 0;
 };
@@ -71,7 +73,7 @@ class FiniteDifferenceCheck {
     std::string wall;
     GO node;
     double x, y;
-    FrictionBranch base, minus, plus;
+    WallNodeState base, minus, plus;
   };
   struct ParameterRuns {
     std::string name;

@@ -4,6 +4,10 @@
 
 namespace flowform {
 
+std::string WallNodeState::name() const {
+  return std::string(frictionBranchName(branch)) + (branch != FrictionBranch::Free && !compressed ? " (p <= 0)" : "");
+}
+
 ContactStatusLoop::ContactStatusLoop(const Teuchos::ParameterList& contact, const Mesh& mesh, const DofMap& dofMap)
     : m_maxChanges(contact.get<int>("Max Status Changes")),
       m_maxPerNode(contact.get<int>("Max Changes Per Node")),
@@ -44,6 +48,21 @@ std::vector<std::vector<FrictionBranch>> ContactStatusLoop::branches(const std::
       wall.tangentialForce(k, wall.frictionParameters(), u[k].data(), pk, &b[k]);
     }
     all.push_back(std::move(b));
+  }
+  return all;
+}
+
+std::vector<std::vector<WallNodeState>> ContactStatusLoop::states(const std::vector<ContactWall>& walls,
+                                                                   const Vector& x) const {
+  const auto b = branches(walls, x);
+  std::vector<std::vector<WallNodeState>> all(walls.size());
+  std::vector<double> p;
+  std::vector<std::array<double, 2>> u;
+  for (size_t w = 0; w < walls.size(); ++w) {
+    wallValues(walls[w], x, p, u);
+    const bool usesPressure = walls[w].usesFrictionCoefficient();
+    for (int k = 0; k < walls[w].numNodes(); ++k)
+      all[w].push_back({b[w][k], usesPressure ? p[k] > 0.0 : true});
   }
   return all;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
@@ -16,6 +17,17 @@
 #include "flowform/contact/ContactWall.hpp"
 
 namespace flowform {
+
+/// What makes the law kink at a wall node: its friction branch, and for laws with ν p⁺
+/// whether the node's own pressure is positive (p⁺ = max(p, 0) kinks at p = 0).
+struct WallNodeState {
+  FrictionBranch branch = FrictionBranch::Free;
+  bool compressed = false;
+  bool operator==(const WallNodeState& o) const { return branch == o.branch && compressed == o.compressed; }
+  bool operator!=(const WallNodeState& o) const { return !(*this == o); }
+  /// e.g. "stick", "slip (p <= 0)".
+  std::string name() const;
+};
 
 class ContactStatusLoop {
  public:
@@ -35,6 +47,9 @@ class ContactStatusLoop {
   /// The branch of the friction law (free, no friction, stick, slip) at every node of
   /// every wall, on every rank: the state whose change makes a derivative one-sided.
   std::vector<std::vector<FrictionBranch>> branches(const std::vector<ContactWall>& walls, const Vector& x) const;
+  /// The branch and, at active nodes of walls whose law uses ν, the sign of p: the state
+  /// whose change between h − δ, h and h + δ makes a finite difference straddle a kink.
+  std::vector<std::vector<WallNodeState>> states(const std::vector<ContactWall>& walls, const Vector& x) const;
 
  private:
   int m_maxChanges, m_maxPerNode;
