@@ -88,9 +88,16 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
     m_jacobianUsed = "last Newton iterate";
   } else {
     if (m_lastNewtonJacobian) log() << "sensitivity: no factorization left by Newton; factoring K_t at the converged q\n";
-    model.computeJacobian(x);
     m_jacobianOffset = 0.0;
     m_jacobianUsed = "converged";
+    try {
+      model.computeJacobian(x);
+    } catch (const std::exception& e) {  // a singular K_t: no sensitivities, exit 3
+      log() << "sensitivity: " << e.what() << "\n";
+      m_finite = false;
+      m_factorizations = model.linearSolver().numFactorizations() - factorizations0;
+      return;
+    }
   }
 
   // K_t dq/dh_j = −∂R/∂h_j: one MultiVector, one back-substitution per column.

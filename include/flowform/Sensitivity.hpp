@@ -66,7 +66,8 @@ class Sensitivity {
   const std::map<std::string, std::map<std::string, double>>& responseDerivatives() const {
     return m_responseDerivatives;
   }
-  /// False when a dq/dh holds NaN or Inf (singular K_t): the run is then not converged.
+  /// False when K_t could not be factored or a dq/dh holds NaN or Inf (singular K_t): the
+  /// run then exits 3, without sensitivities.
   bool finite() const { return m_finite; }
 
   /// "sensitivities" (response → parameter → dφ/dh) and "sensitivity" (what was done and
