@@ -52,6 +52,7 @@ FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, con
     if (sensitivity.responseDerivatives().count(response)) m_names.push_back(response);
   m_names.push_back("velocity_field");
   m_names.push_back("pressure_field");
+  m_differences = Teuchos::rcp(new MultiVector(base.x->getMap(), parameters.size()));
   for (size_t j = 0; j < parameters.size(); ++j) {
     const SensitivityParameter& h = parameters[j];
     ParameterRuns pr;
@@ -102,6 +103,7 @@ FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, con
       log() << "fd check:   d" << response << "/dh: DDM " << e.ddm << ", FD " << e.fd << ", rel. difference "
             << relativeDifference(e.diff, e.ddm, e.fd) << (pr.unchangedSide == "both" ? "" : " (one-sided)") << "\n";
     }
+    m_differences->getVectorNonConst(j)->update(1.0 / (2 * pr.delta), *plus.x, -1.0 / (2 * pr.delta), *minus.x, 0.0);
     const Vector ddmField = *sensitivity.solutionDerivatives().getVector(j);
     for (bool velocity : {true, false}) {
       double n[7];

@@ -337,11 +337,16 @@ FieldSet Simulation::gatherFields() const {
   Vector allDofs(rootDofs);
   allDofs.doImport(*m_solution, Import(m_dofMap->ownedMap(), rootDofs), Tpetra::INSERT);
   // Sensitivity fields only when sensitivities were asked for and computed.
-  Teuchos::RCP<MultiVector> sensitivityDofs;
+  Teuchos::RCP<MultiVector> sensitivityDofs, differenceDofs;
   if (m_sensitivity->computed()) {
     const MultiVector& dqdh = m_sensitivity->solutionDerivatives();
     sensitivityDofs = Teuchos::rcp(new MultiVector(rootDofs, dqdh.getNumVectors()));
     sensitivityDofs->doImport(dqdh, Import(m_dofMap->ownedMap(), rootDofs), Tpetra::INSERT);
+  }
+  if (m_fdCheck) {
+    const MultiVector& fd = m_fdCheck->solutionDifferences();
+    differenceDofs = Teuchos::rcp(new MultiVector(rootDofs, fd.getNumVectors()));
+    differenceDofs->doImport(fd, Import(m_dofMap->ownedMap(), rootDofs), Tpetra::INSERT);
   }
 
   // Cell values at the centroid, computed where the cell is assembled, then to rank 0:
@@ -395,12 +400,14 @@ FieldSet Simulation::gatherFields() const {
       for (int k = 0; k < wall.numNodes(); ++k) status.values[wall.curve().nodes[k]] = wall.isActive(k) ? 1.0 : 0.0;
     fields.nodal.push_back(std::move(status));
   }
-  if (sensitivityDofs) {
-    // du/dh (also as du_t/dh, du_n/dh in the boundary CSVs) and dp/dh per parameter.
-    auto ds = sensitivityDofs->getLocalViewHost(Tpetra::Access::ReadOnly);
+  // du/dh (also as du_t/dh, du_n/dh in the boundary CSVs) and dp/dh per parameter, by DDM
+  // and, when the check ran, by central differences (suffix _fd).
+  for (const auto& [dofs, suffix] : {std::make_pair(sensitivityDofs, ""), std::make_pair(differenceDofs, "_fd")}) {
+    if (!dofs) continue;
+    auto ds = dofs->getLocalViewHost(Tpetra::Access::ReadOnly);
     const auto& parameters = m_sensitivity->parameters();
     for (size_t j = 0; j < parameters.size(); ++j) {
-      const std::string& h = parameters[j].symbol;
+      const std::string h = parameters[j].symbol + suffix;
       Field du{"du_d" + h, 2, std::vector<double>(2 * numNodes), "du_t_d" + h, "du_n_d" + h};
       Field dp{"dp_d" + h, 1, std::vector<double>(numNodes)};
       for (GO n = 0; n < numNodes; ++n) {

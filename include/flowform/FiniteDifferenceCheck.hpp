@@ -57,6 +57,10 @@ class FiniteDifferenceCheck {
   int runs() const { return m_runs; }
   int newtonIterations() const { return m_newtonIterations; }
 
+  /// Column j: the central difference (q(h_j + δ) − q(h_j − δ)) / (2δ), for the fields
+  /// du_d<h>_fd, dp_d<h>_fd beside the DDM's (zero where a run did not converge).
+  const MultiVector& solutionDifferences() const { return *m_differences; }
+
   /// "fd_check": response (or velocity_field, pressure_field) → parameter → entry, and the
   /// runs' record under "sensitivity"/"finite_difference".
   void report(nlohmann::json& summary) const;
@@ -86,6 +90,7 @@ class FiniteDifferenceCheck {
   };
 
   std::vector<ParameterRuns> m_parameters;
+  Teuchos::RCP<MultiVector> m_differences;
   std::vector<std::string> m_names;  ///< the checked responses and the two fields
   std::map<std::string, std::map<std::string, Entry>> m_entries;  ///< response → parameter → entry
   bool m_allConverged = true;
