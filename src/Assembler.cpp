@@ -4,11 +4,15 @@
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Assembly_Helpers.hpp>
 
+#include "flowform/SensitivityParameter.hpp"
 #include "flowform/kernels/ShapeFunctions.hpp"
 
 namespace flowform {
 
 namespace {
+
+/// The "ParamDeriv"/tangent evaluation type: one directional derivative.
+using TangentFad = Sacado::Fad::SFad<double, 1>;
 
 /// Integration order of the flow kernel: P1 in plane strain has constant integrands (one
 /// point is exact); the axisymmetric terms (u_r/r, 2πr) and Q1 need the 3-point / 2×2 rules.
@@ -38,6 +42,7 @@ Assembler::Assembler(const Mesh& mesh, const DofMap& dofMap, const BoundaryCondi
     : m_mesh(mesh), m_dofMap(dofMap), m_bcs(bcs) {
   m_xOverlap = Teuchos::rcp(new Vector(dofMap.overlapMap()));
   m_fOverlap = Teuchos::rcp(new Vector(dofMap.overlapMap()));
+  m_dxOverlap = Teuchos::rcp(new Vector(dofMap.overlapMap()));
 }
 
 Teuchos::RCP<FECrsMatrix> Assembler::createJacobian() const {
@@ -75,16 +80,25 @@ void Assembler::gatherWallNode(const Vector& xOverlap, int ref, Scalar* u, Scala
   p[2] = r.next >= 0 ? x(kDofsPerNode * r.next + kP, 0) : 0.0;
 }
 
-void Assembler::addContactResidual(const Vector& xOverlap, Vector& fOverlap, bool applyConstraints) const {
+template <typename Scalar>
+void Assembler::addContactResidual(const Vector& xOverlap, const Vector* dxOverlap, const SensitivityParameter* h,
+                                   Vector& fOverlap, bool applyConstraints) const {
   auto f = fOverlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  std::vector<FrictionParameters<Scalar>> friction;
+  for (size_t w = 0; w < m_walls->size(); ++w)
+    friction.push_back(frictionFor<Scalar>((*m_walls)[w], static_cast<int>(w), h));
   for (size_t i = 0; i < m_wallNodes.size(); ++i) {
     const WallNodeRef& r = m_wallNodes[i];
-    double u[2], p[3], R[2] = {0.0, 0.0};
-    gatherWallNode(xOverlap, static_cast<int>(i), u, p);
-    (*m_walls)[r.wall].addNodeResidual(r.k, u, p, R);
+    double u0[2], p0[3], du[2] = {0.0, 0.0}, dp[3] = {0.0, 0.0, 0.0};
+    gatherWallNode(xOverlap, static_cast<int>(i), u0, p0);
+    if (dxOverlap) gatherWallNode(*dxOverlap, static_cast<int>(i), du, dp);
+    Scalar u[2], p[3], R[2] = {0.0, 0.0};
+    for (int c = 0; c < 2; ++c) setInput(u[c], u0[c], du[c]);
+    for (int c = 0; c < 3; ++c) setInput(p[c], p0[c], dp[c]);
+    (*m_walls)[r.wall].addNodeResidual(r.k, friction[r.wall], u, p, R);
     if (applyConstraints) applyConstraintRows(m_bcs.constraints()[r.node], R);
-    f(kDofsPerNode * r.node + kUx, 0) += R[0];
-    f(kDofsPerNode * r.node + kUy, 0) += R[1];
+    f(kDofsPerNode * r.node + kUx, 0) += output(R[0]);
+    f(kDofsPerNode * r.node + kUy, 0) += output(R[1]);
   }
 }
 
@@ -163,38 +177,84 @@ void Assembler::nodalCellMaxima(const Vector& xOwned, std::vector<double>& visco
   }
 }
 
+template <typename Scalar>
+void Assembler::addCellResiduals(const Vector& xOverlap, const Vector* dxOverlap, const SensitivityParameter* h,
+                                 Vector& fOverlap, bool applyConstraints) const {
+  auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  decltype(x) dx;
+  if (dxOverlap) dx = dxOverlap->getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto f = fOverlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  const MaterialParameters<Scalar> material = materialFor<Scalar>(m_physics.material, h);
+  const int npc = nodesPerCell(m_mesh.cellType);
+  const int ndof = kDofsPerNode * npc;
+  const auto& cells = m_dofMap.cells();
+  const auto& cellNodes = m_dofMap.cellNodes();
+  const auto& constraints = m_bcs.constraints();
+  CellGeometry g;
+  Scalar dofs[kDofsPerNode * kMaxNodesPerCell], res[kDofsPerNode * kMaxNodesPerCell];
+  for (size_t k = 0; k < cells.size(); ++k) {
+    computeCellGeometry(m_mesh, cells[k], m_physics.kernel.geometry, g);
+    const LO* nodes = &cellNodes[npc * k];
+    for (int a = 0; a < npc; ++a)
+      for (int c = 0; c < kDofsPerNode; ++c) {
+        const LO i = kDofsPerNode * nodes[a] + c;
+        setInput(dofs[kDofsPerNode * a + c], x(i, 0), dxOverlap ? dx(i, 0) : 0.0);
+      }
+    std::fill(res, res + ndof, Scalar(0.0));
+    addFlowResidual(g.rule, g.centroid, g.diameter, m_physics.kernel, material, dofs, res);
+    for (int a = 0; a < npc; ++a) {
+      if (applyConstraints) applyConstraintRows(constraints[nodes[a]], res + kDofsPerNode * a);
+      for (int c = 0; c < kDofsPerNode; ++c) f(kDofsPerNode * nodes[a] + c, 0) += output(res[kDofsPerNode * a + c]);
+    }
+  }
+}
+
 void Assembler::residual(const Vector& xOwned, Vector& fOwned, bool applyConstraints) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: assembly (residual)"));
   const Vector& xOverlap = importSolution(xOwned);
   m_fOverlap->putScalar(0.0);
-  {
-    auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-    auto f = m_fOverlap->getLocalViewHost(Tpetra::Access::ReadWrite);
-    const int npc = nodesPerCell(m_mesh.cellType);
-    const int ndof = kDofsPerNode * npc;
-    const auto& cells = m_dofMap.cells();
-    const auto& cellNodes = m_dofMap.cellNodes();
-    const auto& constraints = m_bcs.constraints();
-    CellGeometry g;
-    double dofs[kDofsPerNode * kMaxNodesPerCell], res[kDofsPerNode * kMaxNodesPerCell];
-    for (size_t k = 0; k < cells.size(); ++k) {
-      computeCellGeometry(m_mesh, cells[k], m_physics.kernel.geometry, g);
-      const LO* nodes = &cellNodes[npc * k];
-      for (int a = 0; a < npc; ++a)
-        for (int c = 0; c < kDofsPerNode; ++c) dofs[kDofsPerNode * a + c] = x(kDofsPerNode * nodes[a] + c, 0);
-      std::fill(res, res + ndof, 0.0);
-      addFlowResidual(g.rule, g.centroid, g.diameter, m_physics.kernel, m_physics.material, dofs, res);
-      for (int a = 0; a < npc; ++a) {
-        if (applyConstraints) applyConstraintRows(constraints[nodes[a]], res + kDofsPerNode * a);
-        for (int c = 0; c < kDofsPerNode; ++c) f(kDofsPerNode * nodes[a] + c, 0) += res[kDofsPerNode * a + c];
-      }
-    }
-  }
+  addCellResiduals<double>(xOverlap, nullptr, nullptr, *m_fOverlap, applyConstraints);
   addTractions(*m_fOverlap, applyConstraints);
-  if (m_walls) addContactResidual(xOverlap, *m_fOverlap, applyConstraints);
+  if (m_walls) addContactResidual<double>(xOverlap, nullptr, nullptr, *m_fOverlap, applyConstraints);
   if (applyConstraints) addConstraintRows(xOverlap, nullptr, m_fOverlap.get());
   fOwned.putScalar(0.0);
   fOwned.doExport(*m_fOverlap, *m_dofMap.exporter(), Tpetra::ADD);
+}
+
+void Assembler::tangent(const Vector& xOwned, const Vector* dxOwned, const SensitivityParameter* h, Vector& dfOwned,
+                        bool applyConstraints) const {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: assembly (tangent)"));
+  const Vector& xOverlap = importSolution(xOwned);
+  const Vector* dxOverlap = nullptr;
+  if (dxOwned) {
+    m_dxOverlap->doImport(*dxOwned, *m_dofMap.importer(), Tpetra::INSERT);
+    dxOverlap = m_dxOverlap.get();
+  }
+  m_fOverlap->putScalar(0.0);
+  addCellResiduals<TangentFad>(xOverlap, dxOverlap, h, *m_fOverlap, applyConstraints);
+  // The tractions depend on neither x nor h.
+  if (m_walls) addContactResidual<TangentFad>(xOverlap, dxOverlap, h, *m_fOverlap, applyConstraints);
+  if (applyConstraints && dxOverlap) {
+    // The constraint rows a·u − b are linear in u and independent of h: their derivative is a·du.
+    auto dx = dxOverlap->getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto f = m_fOverlap->getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (LO n = 0; n < m_dofMap.numOwnedNodes(); ++n) {
+      const NodeConstraint& nc = m_bcs.constraints()[n];
+      const LO ux = kDofsPerNode * n + kUx, uy = kDofsPerNode * n + kUy;
+      if (nc.kind == NodeConstraint::Kind::Full) {
+        f(ux, 0) += dx(ux, 0);
+        f(uy, 0) += dx(uy, 0);
+      } else if (nc.kind == NodeConstraint::Kind::Single) {
+        f(kDofsPerNode * n + nc.constrainedRow, 0) += nc.a[0] * dx(ux, 0) + nc.a[1] * dx(uy, 0);
+      }
+    }
+  }
+  dfOwned.putScalar(0.0);
+  dfOwned.doExport(*m_fOverlap, *m_dofMap.exporter(), Tpetra::ADD);
+}
+
+void Assembler::parameterDerivative(const Vector& xOwned, const SensitivityParameter& h, Vector& dRdh) const {
+  tangent(xOwned, nullptr, &h, dRdh, true);
 }
 
 void Assembler::jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fOwned) const {

@@ -30,6 +30,22 @@ bool parseBool(const std::string& text, bool& value) {
   return false;
 }
 
+/// "{a, b, c}" or "a, b, c" (braces optional) as an array of trimmed strings; "{}" is empty.
+Teuchos::Array<std::string> parseStringArray(std::string text) {
+  auto trim = [](const std::string& t) {
+    const size_t a = t.find_first_not_of(" \t"), b = t.find_last_not_of(" \t");
+    return a == std::string::npos ? std::string() : t.substr(a, b - a + 1);
+  };
+  text = trim(text);
+  if (text.size() >= 2 && text.front() == '{' && text.back() == '}') text = text.substr(1, text.size() - 2);
+  Teuchos::Array<std::string> items;
+  std::string item;
+  std::istringstream is(text);
+  while (std::getline(is, item, ','))
+    if (!trim(item).empty()) items.push_back(trim(item));
+  return items;
+}
+
 /// The entry `name` of the list reached by `path` in `list`, or nullptr.
 const Teuchos::ParameterEntry* findEntry(const Teuchos::ParameterList& list, const std::vector<std::string>& path,
                                          const std::string& name) {
@@ -85,6 +101,8 @@ void applyOverride(Teuchos::ParameterList& params, const std::string& assignment
     target->set(name, v);
   } else if (like && like->isType<std::string>()) {
     target->set(name, value);
+  } else if (like && like->isType<Teuchos::Array<std::string>>()) {
+    target->set(name, parseStringArray(value));
   } else if (like) {
     throw InputError("--set '" + assignment + "': parameter of type " + like->getAny().typeName() +
                      " cannot be set from the command line");

@@ -15,10 +15,12 @@ void FlowModel::computeJacobian(const Vector& x) {
   m_jacobianValid = false;
   m_assembler.jacobian(x, *m_jacobian);
   m_linearSolver.factor(m_jacobian);
+  if (m_jacobianPoint.is_null()) m_jacobianPoint = Teuchos::rcp(new Vector(x.getMap()));
+  Tpetra::deep_copy(*m_jacobianPoint, x);
   m_jacobianValid = true;
 }
 
-void FlowModel::solve(const Vector& in, Vector& out) { m_linearSolver.solve(in, out); }
+void FlowModel::solve(const MultiVector& in, MultiVector& out) { m_linearSolver.solve(in, out); }
 
 void FlowModel::applyJacobian(const Vector& in, Vector& out) const { m_jacobian->apply(in, out); }
 

@@ -87,7 +87,7 @@ void LinearSolver::factor(const Teuchos::RCP<const CrsMatrix>& A) {
 void LinearSolver::solve(const MultiVector& b, MultiVector& x) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: linear solve"));
   Impl& d = *m_impl;
-  ++m_numSolves;
+  m_numSolves += static_cast<int>(b.getNumVectors());  // one back-substitution per column
   if (!d.gather) {
     d.solver->solve(Teuchos::ptrFromRef(x), Teuchos::ptrFromRef(b));
     return;

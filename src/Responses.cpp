@@ -1,12 +1,15 @@
 #include "flowform/Responses.hpp"
 
 #include <cmath>
+#include <type_traits>
 
+#include <Sacado.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/BoundaryCurve.hpp"
 #include "flowform/InputError.hpp"
+#include "flowform/SensitivityParameter.hpp"
 #include "flowform/kernels/FlowResidual.hpp"
 
 namespace flowform {
@@ -51,43 +54,73 @@ Responses::Responses(const Teuchos::ParameterList& list, const Mesh& mesh) {
 
 namespace {
 
+using TangentFad = Sacado::Fad::SFad<double, 1>;
+
 double sumOverRanks(const Comm& comm, double local) {
   double global = 0.0;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
   return global;
 }
+TangentFad sumOverRanks(const Comm& comm, const TangentFad& local) {
+  return dual<TangentFad>(sumOverRanks(comm, local.val()), sumOverRanks(comm, local.dx(0)));
+}
 
-/// ∫ 2μ D:D dΩ (plastic power), Σ τ_K ∫ ∇p·(∇p − f) (stabilization power) and the
-/// dead-zone area over this rank's cells.
-void cellIntegrals(const Vector& xOverlap, const Mesh& mesh, const DofMap& dofMap, const FlowPhysics& physics,
-                   double deadSpeed, double& plasticPower, double& stabilizationPower, double& deadArea) {
-  auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+/// Value (Scalar double) or value and derivative (tangent) of an overlap dof.
+template <typename Scalar>
+struct DofReader {
+  decltype(std::declval<const Vector&>().getLocalViewHost(Tpetra::Access::ReadOnly)) x, dx;
+  bool hasDirection = false;
+  Scalar operator()(LO i) const {
+    Scalar s;
+    setInput(s, x(i, 0), hasDirection ? dx(i, 0) : 0.0);
+    return s;
+  }
+};
+
+template <typename Scalar>
+DofReader<Scalar> reader(const Vector& x, const Vector* dx) {
+  DofReader<Scalar> r;
+  r.x = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+  if (dx) {
+    r.dx = dx->getLocalViewHost(Tpetra::Access::ReadOnly);
+    r.hasDirection = true;
+  }
+  return r;
+}
+
+/// ∫ 2μ D:D dΩ (plastic power) and Σ τ_K ∫ ∇p·(∇p − f) (stabilization power) over this
+/// rank's cells, and (values only) the dead-zone area.
+template <typename Scalar>
+void cellIntegrals(const DofReader<Scalar>& x, const Mesh& mesh, const DofMap& dofMap, const FlowPhysics& physics,
+                   const MaterialParameters<Scalar>& material, double deadSpeed, Scalar& plasticPower,
+                   Scalar& stabilizationPower, double& deadArea) {
   const int npc = nodesPerCell(mesh.cellType);
   const Geometry geometry = physics.kernel.geometry;
   CellQuadrature rule, centroid;
   std::array<double, 2> xy[kMaxNodesPerCell];
-  double dofs[kDofsPerNode * kMaxNodesPerCell];
-  plasticPower = stabilizationPower = deadArea = 0.0;
+  Scalar dofs[kDofsPerNode * kMaxNodesPerCell];
+  plasticPower = stabilizationPower = 0.0;
+  deadArea = 0.0;
   const int order = (mesh.cellType == CellType::Triangle3 && geometry == Geometry::PlaneStrain) ? 1 : 2;
   for (size_t k = 0; k < dofMap.cells().size(); ++k) {
     const LO* nodes = &dofMap.cellNodes()[npc * k];
     for (int a = 0; a < npc; ++a) {
       xy[a] = mesh.coords[dofMap.overlapNodes()[nodes[a]]];
-      for (int c = 0; c < kDofsPerNode; ++c) dofs[kDofsPerNode * a + c] = x(kDofsPerNode * nodes[a] + c, 0);
+      for (int c = 0; c < kDofsPerNode; ++c) dofs[kDofsPerNode * a + c] = x(kDofsPerNode * nodes[a] + c);
     }
     // The kernel's own rule, so that the powers match the discrete equations exactly.
     computeCellQuadrature(mesh.cellType, xy, order, rule);
     computeCellQuadrature(mesh.cellType, xy, 1, centroid);
     const auto dc = strainRateAt(centroid, 0, geometry, dofs);
-    const double muK = viscosity(regularizedStrainRate(dc.ddot(), physics.material), physics.material);
+    const Scalar muK = viscosity(regularizedStrainRate(dc.ddot(), material), material);
     const double h = cellDiameter(mesh.cellType, xy);
-    const double tau = physics.kernel.beta * h * h / (2.0 * muK);
+    const Scalar tau = physics.kernel.beta * h * h / (2.0 * muK);
     for (int q = 0; q < rule.numPoints; ++q) {
       const auto d = strainRateAt(rule, q, geometry, dofs);
-      const double mu = viscosity(regularizedStrainRate(d.ddot(), physics.material), physics.material);
+      const Scalar mu = viscosity(regularizedStrainRate(d.ddot(), material), material);
       const double w = measureWeight(rule, q, geometry);
       plasticPower += w * 2.0 * mu * d.ddot();
-      double px = 0.0, py = 0.0;
+      Scalar px = 0.0, py = 0.0;
       for (int a = 0; a < npc; ++a) {
         px += rule.dNdx[q][a] * dofs[kDofsPerNode * a + kP];
         py += rule.dNdy[q][a] * dofs[kDofsPerNode * a + kP];
@@ -96,8 +129,8 @@ void cellIntegrals(const Vector& xOverlap, const Mesh& mesh, const DofMap& dofMa
     }
     double ux = 0.0, uy = 0.0;
     for (int a = 0; a < npc; ++a) {
-      ux += centroid.N[0][a] * dofs[kDofsPerNode * a + kUx];
-      uy += centroid.N[0][a] * dofs[kDofsPerNode * a + kUy];
+      ux += centroid.N[0][a] * output<double>(x.x(kDofsPerNode * nodes[a] + kUx, 0));
+      uy += centroid.N[0][a] * output<double>(x.x(kDofsPerNode * nodes[a] + kUy, 0));
     }
     if (std::hypot(ux, uy) < deadSpeed) {
       for (int q = 0; q < rule.numPoints; ++q) deadArea += measureWeight(rule, q, geometry);
@@ -107,33 +140,41 @@ void cellIntegrals(const Vector& xOverlap, const Mesh& mesh, const DofMap& dofMa
 
 }  // namespace
 
-std::map<std::string, double> Responses::evaluate(const Vector& xOwned, const Mesh& mesh, const DofMap& dofMap,
-                                                  const Assembler& assembler,
-                                                  const std::vector<ContactWall>& walls) const {
-  std::map<std::string, double> values;
+template <typename Scalar>
+std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const Vector* dxOwned,
+                                                    const SensitivityParameter* h, const Mesh& mesh,
+                                                    const DofMap& dofMap, const Assembler& assembler,
+                                                    const std::vector<ContactWall>& walls) const {
+  std::map<std::string, Scalar> values;
   if (m_responses.empty()) return values;
   const Comm& comm = *dofMap.comm();
   const Geometry geometry = assembler.physics().kernel.geometry;
+  const bool tangent = !std::is_same_v<Scalar, double>;
 
-  Vector reactions(dofMap.ownedMap()), xOverlap(dofMap.overlapMap());
+  // The reactions (unconstrained residual) and, for the tangent, their derivative.
+  Vector reactions(dofMap.ownedMap()), dReactions(dofMap.ownedMap());
+  Vector xOverlap(dofMap.overlapMap()), dxOverlap(dofMap.overlapMap());
   assembler.residual(xOwned, reactions, false);
+  if (tangent) assembler.tangent(xOwned, dxOwned, h, dReactions, false);
   xOverlap.doImport(xOwned, *dofMap.importer(), Tpetra::INSERT);
-  auto R = reactions.getLocalViewHost(Tpetra::Access::ReadOnly);
-  auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  if (dxOwned) dxOverlap.doImport(*dxOwned, *dofMap.importer(), Tpetra::INSERT);
+  const DofReader<Scalar> R = reader<Scalar>(reactions, tangent ? &dReactions : nullptr);
+  const DofReader<Scalar> x = reader<Scalar>(xOverlap, dxOwned ? &dxOverlap : nullptr);
+  const MaterialParameters<Scalar> material = materialFor<Scalar>(assembler.physics().material, h);
 
   for (const Response& r : m_responses) {
-    double local = 0.0;
+    Scalar local = 0.0;
     if (r.type == "Boundary Force" || r.type == "Mean Pressure" || r.type == "Boundary Power") {
       const BoundaryCurve curve = buildBoundaryCurve(mesh, mesh.boundary(r.boundary));
       for (size_t k = 0; k < curve.nodes.size(); ++k) {
         const LO n = dofMap.overlapIndex(curve.nodes[k]);
         if (n < 0 || n >= dofMap.numOwnedNodes()) continue;  // each node once, by its owner
-        const double Rx = R(kDofsPerNode * n + kUx, 0), Ry = R(kDofsPerNode * n + kUy, 0);
+        const Scalar Rx = R(kDofsPerNode * n + kUx), Ry = R(kDofsPerNode * n + kUy);
         if (r.type == "Boundary Force") local += r.component == "X" ? Rx : Ry;
         if (r.type == "Mean Pressure") local -= Rx * curve.normals[k][0] + Ry * curve.normals[k][1];
-        if (r.type == "Boundary Power") local += Rx * x(kDofsPerNode * n + kUx, 0) + Ry * x(kDofsPerNode * n + kUy, 0);
+        if (r.type == "Boundary Power") local += Rx * x(kDofsPerNode * n + kUx) + Ry * x(kDofsPerNode * n + kUy);
       }
-      double value = sumOverRanks(comm, local);
+      Scalar value = sumOverRanks(comm, local);
       if (r.type == "Mean Pressure") {
         double area = 0.0;  // the same on every rank: the curve is replicated
         for (size_t s = 0; s < curve.segmentLength.size(); ++s) {
@@ -144,37 +185,59 @@ std::map<std::string, double> Responses::evaluate(const Vector& xOwned, const Me
         value /= area;
       }
       values[r.name] = value;
-    } else if (r.type == "Plastic Power" || r.type == "Dead Zone" || r.type == "Stabilization Power") {
-      double plastic, stabilization, dead;
-      cellIntegrals(xOverlap, mesh, dofMap, assembler.physics(), r.fraction * r.referenceSpeed, plastic, stabilization,
-                    dead);
-      values[r.name] = sumOverRanks(comm, r.type == "Plastic Power" ? plastic
-                                          : r.type == "Dead Zone"   ? dead
-                                                                    : stabilization);
+    } else if (r.type == "Plastic Power" || r.type == "Stabilization Power" || r.type == "Dead Zone") {
+      if (tangent && r.type == "Dead Zone") continue;  // piecewise constant in x: no derivative
+      Scalar plastic, stabilization;
+      double dead;
+      cellIntegrals(x, mesh, dofMap, assembler.physics(), material, r.fraction * r.referenceSpeed, plastic,
+                    stabilization, dead);
+      if (r.type == "Dead Zone") values[r.name] = sumOverRanks(comm, dead);
+      else values[r.name] = sumOverRanks(comm, r.type == "Plastic Power" ? plastic : stabilization);
     } else if (r.type == "Friction Power" || r.type == "Penalty Power") {
-      for (const ContactWall& wall : walls)
+      for (size_t w = 0; w < walls.size(); ++w) {
+        const ContactWall& wall = walls[w];
+        const FrictionParameters<Scalar> fp = frictionFor<Scalar>(wall, static_cast<int>(w), h);
         for (int k = 0; k < wall.numNodes(); ++k) {
           const LO n = dofMap.overlapIndex(wall.curve().nodes[k]);
           if (n < 0 || n >= dofMap.numOwnedNodes()) continue;
-          auto pressure = [&](int j) { return j < 0 ? 0.0 : x(kDofsPerNode * dofMap.overlapIndex(wall.curve().nodes[j]) + kP, 0); };
-          const double u[2] = {x(kDofsPerNode * n + kUx, 0), x(kDofsPerNode * n + kUy, 0)};
-          const double p[3] = {pressure(wall.previous(k)), x(kDofsPerNode * n + kP, 0), pressure(wall.next(k))};
+          auto pressure = [&](int j) {
+            return j < 0 ? Scalar(0.0) : x(kDofsPerNode * dofMap.overlapIndex(wall.curve().nodes[j]) + kP);
+          };
+          const Scalar u[2] = {x(kDofsPerNode * n + kUx), x(kDofsPerNode * n + kUy)};
+          const Scalar p[3] = {pressure(wall.previous(k)), x(kDofsPerNode * n + kP), pressure(wall.next(k))};
           const auto& nk = wall.curve().normals[k];
+          const Scalar g = wall.tangentialForce(k, fp, u, p);
           if (r.type == "Friction Power") {
-            const double ut = -nk[1] * u[0] + nk[0] * u[1];
-            local += wall.tangentialForce(k, u, p) * ut;
+            const Scalar ut = -nk[1] * u[0] + nk[0] * u[1];
+            local += g * ut;
           } else {
             // The normal part of the node's contact residual, dotted with u: α_n (u·n)².
-            double R[2] = {0.0, 0.0};
-            wall.addNodeResidual(k, u, p, R);
-            const double g = wall.tangentialForce(k, u, p);
-            local += (R[0] + g * nk[1]) * u[0] + (R[1] - g * nk[0]) * u[1];
+            Scalar Rn[2] = {0.0, 0.0};
+            wall.addNodeResidual(k, fp, u, p, Rn);
+            local += (Rn[0] + g * nk[1]) * u[0] + (Rn[1] - g * nk[0]) * u[1];
           }
         }
+      }
       values[r.name] = sumOverRanks(comm, local);
     }
   }
   return values;
+}
+
+std::map<std::string, double> Responses::evaluate(const Vector& xOwned, const Mesh& mesh, const DofMap& dofMap,
+                                                  const Assembler& assembler,
+                                                  const std::vector<ContactWall>& walls) const {
+  return evaluateAs<double>(xOwned, nullptr, nullptr, mesh, dofMap, assembler, walls);
+}
+
+std::map<std::string, double> Responses::derivatives(const Vector& xOwned, const Vector& dxOwned,
+                                                     const SensitivityParameter& h, const Mesh& mesh,
+                                                     const DofMap& dofMap, const Assembler& assembler,
+                                                     const std::vector<ContactWall>& walls) const {
+  std::map<std::string, double> d;
+  for (const auto& [name, value] : evaluateAs<TangentFad>(xOwned, &dxOwned, &h, mesh, dofMap, assembler, walls))
+    d[name] = value.dx(0);
+  return d;
 }
 
 }  // namespace flowform

@@ -152,6 +152,8 @@ Teuchos::RCP<const ParameterList> Simulation::validParameters() {
               Teuchos::rcp(new EnhancedNumberValidator<int>(1, 1000)));
   contact.set("Pressure Tolerance", 1e-3, "an active node is released when p < -this [stress]", nonNegative);
   contact.set("Penetration Tolerance", 1e-4, "a free node is activated when u·n > this [velocity]", nonNegative);
+  valid->set("Sensitivity", *Sensitivity::validParameters(),
+             "sensitivities by direct differentiation and their finite-difference check (SPEC §4)");
   valid->sublist("Regression", false, "expected values for a regression checker");
   return valid;
 }
@@ -216,6 +218,11 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   }
   markConvexToolCorners(m_walls);
   m_responses = std::make_unique<Responses>(m_params.sublist("Responses"), m_mesh);
+  // Only a case with a Sensitivity sublist gets one (with defaults): none means no work.
+  if (m_params.isSublist("Sensitivity"))
+    validateSublist(m_params.sublist("Sensitivity"), valid.sublist("Sensitivity"), "Sensitivity");
+  m_sensitivity = std::make_unique<Sensitivity>(
+      m_params.isSublist("Sensitivity") ? &m_params.sublist("Sensitivity") : nullptr, m_walls, *m_responses);
 
   m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings);
   m_bcs = std::make_unique<BoundaryConditions>(bcList, m_mesh, *m_dofMap);
@@ -223,6 +230,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   m_assembler->setPhysics(m_physics);
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
   m_model = std::make_unique<FlowModel>(*m_assembler);
+  m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
   m_setupSeconds = secondsSince(start);
@@ -241,7 +249,8 @@ const SolveReport& Simulation::run() {
     solver.setBeforeNewton([this](const Vector& x) { updateWallScales(x); });
   }
   m_report = solver.solve(*m_solution, m_physics);
-  if (m_report.converged && !m_walls.empty()) runContactLoop(solver);
+  if (m_report.converged && !m_walls.empty())
+    m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged)
     m_functionals = m_responses->evaluate(*m_solution, m_mesh, *m_dofMap, *m_assembler, m_walls);
   m_solveSeconds = secondsSince(start);
@@ -250,7 +259,57 @@ const SolveReport& Simulation::run() {
           << m_report.continuationStages << " stages, |F| = " << m_report.residualNorm << ")\n";
   else
     log() << "flowform: NOT CONVERGED: " << m_report.message << "\n";
+  if (m_report.converged && m_sensitivity->requested()) runSensitivity();
   return m_report;
+}
+
+int Simulation::exitStatus() const {
+  if (!m_report.converged) return 3;
+  if (m_sensitivity->requested() && !m_sensitivity->finite()) return 3;
+  if (m_fdCheck && !m_fdCheck->allConverged()) return 3;
+  return 0;
+}
+
+void Simulation::runSensitivity() {
+  const auto start = std::chrono::steady_clock::now();
+  m_sensitivity->compute(*m_model, *m_solution, *m_responses, m_mesh, *m_dofMap, m_walls);
+  if (m_sensitivity->checkRequested() && m_sensitivity->finite()) {
+    PerturbedRun base;
+    base.converged = true;
+    base.x = m_solution;
+    base.functionals = m_functionals;
+    base.states = m_statusLoop->states(m_walls, *m_solution);
+    m_fdCheck = std::make_unique<FiniteDifferenceCheck>(
+        *m_sensitivity, base, m_physics, m_walls, m_mesh,
+        [this](const SensitivityParameter& h, double delta) { return solvePerturbed(h, delta); });
+  }
+  m_sensitivitySeconds = secondsSince(start);
+}
+
+PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double delta) {
+  const std::vector<ContactWall> saved = m_walls;
+  FlowPhysics physics = m_physics;
+  shiftParameter(h, delta, physics, m_walls);
+  // Held scales (the default) keep the walls' μ_k and σ̄_k of the base run, the problem the
+  // DDM differentiates; Recomputed takes them from the start state at h ± δ, as a solve does.
+  NonlinearSolver solver(*m_model, m_params.sublist("Solver"));
+  if (!m_walls.empty() && !m_sensitivity->holdScalesInCheck())
+    solver.setBeforeNewton([this](const Vector& x) { updateWallScales(x); });
+  auto x = Teuchos::rcp(new Vector(*m_solution, Teuchos::Copy));
+  PerturbedRun run;
+  SolveReport report = solver.resolve(*x, physics);
+  if (report.converged && !m_walls.empty()) run.contactChanges = m_statusLoop->run(solver, *x, physics, m_walls, report);
+  run.converged = report.converged;
+  run.message = report.message;
+  run.newtonIterations = report.newtonIterations;
+  run.x = x;
+  if (run.converged) {
+    run.functionals = m_responses->evaluate(*x, m_mesh, *m_dofMap, *m_assembler, m_walls);
+    run.states = m_statusLoop->states(m_walls, *x);
+  }
+  m_walls = saved;
+  m_model->setPhysics(m_physics);
+  return run;
 }
 
 void Simulation::updateWallScales(const Vector& x) {
@@ -269,72 +328,6 @@ void Simulation::updateWallScales(const Vector& x) {
   m_model->invalidateJacobian();
 }
 
-void Simulation::wallValues(const ContactWall& wall, std::vector<double>& p,
-                            std::vector<std::array<double, 2>>& u) const {
-  std::vector<GO> gids;
-  for (GO node : wall.curve().nodes)
-    for (int c = 0; c < kDofsPerNode; ++c) gids.push_back(kDofsPerNode * node + c);
-  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  auto replicated = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids), 0, m_comm));
-  Vector values(replicated);
-  values.doImport(*m_solution, Import(m_dofMap->ownedMap(), replicated), Tpetra::INSERT);
-  auto v = values.getLocalViewHost(Tpetra::Access::ReadOnly);
-  p.resize(wall.numNodes());
-  u.resize(wall.numNodes());
-  for (int k = 0; k < wall.numNodes(); ++k) {
-    u[k] = {v(kDofsPerNode * k + kUx, 0), v(kDofsPerNode * k + kUy, 0)};
-    p[k] = v(kDofsPerNode * k + kP, 0);
-  }
-}
-
-void Simulation::runContactLoop(NonlinearSolver& solver) {
-  const ParameterList& contact = m_params.sublist("Contact");
-  const int maxChanges = contact.get<int>("Max Status Changes");
-  const double pTol = contact.get<double>("Pressure Tolerance"), uTol = contact.get<double>("Penetration Tolerance");
-  const int maxPerNode = contact.get<int>("Max Changes Per Node");
-  SolveReport again;
-  while (m_report.converged) {
-    // The largest violation over all walls, at a limit of a contact zone (SPEC §2).
-    int wallIndex = -1, unsettled = 0;
-    StatusChange best;
-    std::vector<double> p;
-    std::vector<std::array<double, 2>> u;
-    for (size_t w = 0; w < m_walls.size(); ++w) {
-      wallValues(m_walls[w], p, u);
-      int stuck = 0;
-      const StatusChange c = m_walls[w].nextChange(p, u, pTol, uTol, maxPerNode, &stuck);
-      unsettled += stuck;
-      if (c.node >= 0 && c.violation > best.violation) { best = c; wallIndex = static_cast<int>(w); }
-    }
-    if (wallIndex < 0) {
-      if (unsettled > 0) {
-        m_report.converged = false;
-        m_report.message = std::to_string(unsettled) + " contact node(s) cycle between active and free (each changed " +
-                           std::to_string(maxPerNode) + " times) and still violate their criterion";
-      }
-      break;
-    }
-    if (m_contactChanges >= maxChanges) {
-      m_report.converged = false;
-      m_report.message = "the contact status did not settle after " + std::to_string(maxChanges) + " changes";
-      break;
-    }
-    ContactWall& wall = m_walls[wallIndex];
-    const auto& xy = m_mesh.coords[wall.curve().nodes[best.node]];
-    log() << "contact: wall '" << wall.name() << "' node " << wall.curve().nodes[best.node] << " at (" << xy[0] << ", "
-          << xy[1] << "): " << (best.activate ? "free -> active (penetration " : "active -> free (tension ")
-          << best.violation << ")\n";
-    wall.setActive(best.node, best.activate);
-    ++m_contactChanges;
-    again = solver.resolve(*m_solution, m_physics);
-    m_report.newtonIterations += again.newtonIterations;
-    m_report.converged = again.converged;
-    m_report.residualNorm = again.residualNorm;
-    if (!again.converged) m_report.message = "after contact change " + std::to_string(m_contactChanges) + ": " + again.message;
-  }
-  log() << "contact: " << m_contactChanges << " status change(s)\n";
-}
-
 FieldSet Simulation::gatherFields() const {
   const GO numNodes = m_mesh.numNodes(), numCells = m_mesh.numCells();
   const bool root = m_comm->getRank() == 0;
@@ -343,6 +336,18 @@ FieldSet Simulation::gatherFields() const {
   auto rootDofs = Teuchos::rcp(new Map(kDofsPerNode * numNodes, root ? kDofsPerNode * numNodes : 0, 0, m_comm));
   Vector allDofs(rootDofs);
   allDofs.doImport(*m_solution, Import(m_dofMap->ownedMap(), rootDofs), Tpetra::INSERT);
+  // Sensitivity fields only when sensitivities were asked for and computed.
+  Teuchos::RCP<MultiVector> sensitivityDofs, differenceDofs;
+  if (m_sensitivity->computed()) {
+    const MultiVector& dqdh = m_sensitivity->solutionDerivatives();
+    sensitivityDofs = Teuchos::rcp(new MultiVector(rootDofs, dqdh.getNumVectors()));
+    sensitivityDofs->doImport(dqdh, Import(m_dofMap->ownedMap(), rootDofs), Tpetra::INSERT);
+  }
+  if (m_fdCheck) {
+    const MultiVector& fd = m_fdCheck->solutionDifferences();
+    differenceDofs = Teuchos::rcp(new MultiVector(rootDofs, fd.getNumVectors()));
+    differenceDofs->doImport(fd, Import(m_dofMap->ownedMap(), rootDofs), Tpetra::INSERT);
+  }
 
   // Cell values at the centroid, computed where the cell is assembled, then to rank 0:
   // e = sqrt(2/3 D:D), μ(e_r), σ_eq = sqrt(3/2 s:s) = 3 μ e.
@@ -395,6 +400,25 @@ FieldSet Simulation::gatherFields() const {
       for (int k = 0; k < wall.numNodes(); ++k) status.values[wall.curve().nodes[k]] = wall.isActive(k) ? 1.0 : 0.0;
     fields.nodal.push_back(std::move(status));
   }
+  // du/dh (also as du_t/dh, du_n/dh in the boundary CSVs) and dp/dh per parameter, by DDM
+  // and, when the check ran, by central differences (suffix _fd).
+  for (const auto& [dofs, suffix] : {std::make_pair(sensitivityDofs, ""), std::make_pair(differenceDofs, "_fd")}) {
+    if (!dofs) continue;
+    auto ds = dofs->getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto& parameters = m_sensitivity->parameters();
+    for (size_t j = 0; j < parameters.size(); ++j) {
+      const std::string h = parameters[j].symbol + suffix;
+      Field du{"du_d" + h, 2, std::vector<double>(2 * numNodes), "du_t_d" + h, "du_n_d" + h};
+      Field dp{"dp_d" + h, 1, std::vector<double>(numNodes)};
+      for (GO n = 0; n < numNodes; ++n) {
+        du.values[2 * n] = ds(kDofsPerNode * n + kUx, j);
+        du.values[2 * n + 1] = ds(kDofsPerNode * n + kUy, j);
+        dp.values[n] = ds(kDofsPerNode * n + kP, j);
+      }
+      fields.nodal.push_back(std::move(du));
+      fields.nodal.push_back(std::move(dp));
+    }
+  }
   auto c = allCells.getLocalViewHost(Tpetra::Access::ReadOnly);
   const char* names[3] = {"strain_rate", "equivalent_stress", "viscosity"};
   for (const auto& wanted : m_params.sublist("Output").get<Teuchos::Array<std::string>>("Cell Fields"))
@@ -444,7 +468,7 @@ void Simulation::writeOutput(const std::string& outDir) const {
                               {"jacobians", m_model->numJacobians()}};
   const double assemblyResidual = timerSeconds("flowform: assembly (residual)");
   const double assemblyJacobian = timerSeconds("flowform: assembly (Jacobian)");
-  summary["timings"] = {{"total", m_setupSeconds + m_solveSeconds + secondsSince(start)},
+  summary["timings"] = {{"total", m_setupSeconds + m_solveSeconds + m_sensitivitySeconds + secondsSince(start)},
                         {"setup", m_setupSeconds},
                         {"solve", m_solveSeconds},
                         {"assembly", assemblyResidual + assemblyJacobian},
@@ -452,7 +476,9 @@ void Simulation::writeOutput(const std::string& outDir) const {
                         {"assembly_jacobian", assemblyJacobian},
                         {"factorization", timerSeconds("flowform: factorization")},
                         {"linear_solve", timerSeconds("flowform: linear solve")},
-                        {"sensitivity", 0.0},
+                        {"sensitivity", m_sensitivitySeconds},
+                        {"sensitivity_ddm", timerSeconds("flowform: sensitivity")},
+                        {"finite_difference_check", timerSeconds("flowform: finite-difference check")},
                         {"output", secondsSince(start)}};
   nlohmann::json stages = nlohmann::json::array();
   for (const auto& s : m_report.stages)
@@ -462,8 +488,13 @@ void Simulation::writeOutput(const std::string& outDir) const {
   summary["stages"] = stages;
   summary["functionals"] = nlohmann::json::object();
   for (const auto& [name, value] : m_functionals) summary["functionals"][name] = value;
-  summary["sensitivities"] = nlohmann::json::object();
   summary["fd_check"] = nlohmann::json::object();
+  m_sensitivity->report(summary);  // "sensitivities", "sensitivity" (what it cost)
+  summary["sensitivity"]["finite_difference"] = {{"runs", 0}};
+  if (m_fdCheck) m_fdCheck->report(summary);  // "fd_check"
+  if (m_report.converged && exitStatus() != 0)
+    summary["message"] = !m_sensitivity->finite() ? "dq/dh is not finite (singular Jacobian?)"
+                                                  : "a finite-difference run of the sensitivity check did not converge";
   summary["parameters"] = parameterListToJson(m_params);
   writeJsonFile(outDir + "/summary.json", summary);
 }

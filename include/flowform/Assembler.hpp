@@ -18,6 +18,8 @@
 
 namespace flowform {
 
+struct SensitivityParameter;
+
 /// What the bulk physics is: geometry, stabilization, body force and the material law.
 struct FlowPhysics {
   FlowKernelSettings kernel;
@@ -40,6 +42,18 @@ class Assembler {
   /// force the tool applies (the reaction), which the Boundary Force response sums.
   void residual(const Vector& xOwned, Vector& fOwned, bool applyConstraints = true) const;
 
+  /// ∂R/∂h at x (owned map, SPEC §4): the same templated residual with the parameter h
+  /// seeded and the dofs held, bulk and contact terms alike. Constraint rows (prescribed
+  /// velocity, symmetry) give 0: they do not depend on h. The contact penalty scales μ_k and
+  /// the Tresca σ̄_k are held (ContactWall::setScales): they do not depend on h here.
+  void parameterDerivative(const Vector& xOwned, const SensitivityParameter& h, Vector& dRdh) const;
+
+  /// The directional derivative d/dε F(x + ε dx; h + ε) at ε = 0, into `dfOwned`: J dx +
+  /// ∂F/∂h. `dxOwned` null: no motion of x; `h` null: no parameter. With `applyConstraints`
+  /// false, of the unconstrained residual (the reactions' derivative, for the responses).
+  void tangent(const Vector& xOwned, const Vector* dxOwned, const SensitivityParameter* h, Vector& dfOwned,
+               bool applyConstraints = true) const;
+
   /// Per overlap node: the largest cell viscosity μ and flow stress σ̄ (at the centroid) over
   /// all cells that touch it, on every rank alike (the contact penalty scales).
   void nodalCellMaxima(const Vector& xOwned, std::vector<double>& viscosity, std::vector<double>& flowStress) const;
@@ -56,7 +70,14 @@ class Assembler {
   void addTractions(Vector& fOverlap, bool applyConstraints = true) const;
   template <typename Scalar>
   void gatherWallNode(const Vector& xOverlap, int ref, Scalar* u, Scalar* p) const;
-  void addContactResidual(const Vector& xOverlap, Vector& fOverlap, bool applyConstraints) const;
+  /// Residual (Scalar double) or tangent (an AD type: x seeded along dx, h seeded) of the
+  /// cells and of the walls, added into fOverlap.
+  template <typename Scalar>
+  void addCellResiduals(const Vector& xOverlap, const Vector* dxOverlap, const SensitivityParameter* h,
+                        Vector& fOverlap, bool applyConstraints) const;
+  template <typename Scalar>
+  void addContactResidual(const Vector& xOverlap, const Vector* dxOverlap, const SensitivityParameter* h,
+                          Vector& fOverlap, bool applyConstraints) const;
   void addContactJacobian(const Vector& xOverlap, FECrsMatrix& jacobian, Vector* fOverlap) const;
 
   /// An owned wall node and the overlap indices of it and its wall neighbours (−1: none).
@@ -74,6 +95,7 @@ class Assembler {
   std::vector<WallNodeRef> m_wallNodes;
   Teuchos::RCP<Vector> m_xOverlap;  ///< scratch: x imported to the overlap map
   Teuchos::RCP<Vector> m_fOverlap;  ///< scratch: residual before the export to owned rows
+  Teuchos::RCP<Vector> m_dxOverlap;  ///< scratch: a direction imported to the overlap map
 };
 
 }  // namespace flowform

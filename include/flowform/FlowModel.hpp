@@ -27,13 +27,17 @@ class FlowModel {
   void residual(const Vector& x, Vector& f);
   /// Assembles J(x) and factors it. Throws std::runtime_error when the factorization fails.
   void computeJacobian(const Vector& x);
-  /// out = J⁻¹ in, with the factors of the last computeJacobian().
-  void solve(const Vector& in, Vector& out);
+  /// out = J⁻¹ in, with the factors of the last computeJacobian() (one back-substitution
+  /// per column).
+  void solve(const MultiVector& in, MultiVector& out);
   /// out = J in.
   void applyJacobian(const Vector& in, Vector& out) const;
   /// Forgets the factorization (the physics changed, so J no longer matches).
   void invalidateJacobian() { m_jacobianValid = false; }
   bool hasJacobian() const { return m_jacobianValid; }
+  /// The x at which the current Jacobian and its factors were computed (null before the
+  /// first). After NOX converges this is the previous iterate, not the converged x.
+  Teuchos::RCP<const Vector> jacobianPoint() const { return m_jacobianPoint; }
 
   int numResiduals() const { return m_numResiduals; }
   int numJacobians() const { return m_numJacobians; }
@@ -43,6 +47,7 @@ class FlowModel {
  private:
   Assembler& m_assembler;
   Teuchos::RCP<FECrsMatrix> m_jacobian;
+  Teuchos::RCP<Vector> m_jacobianPoint;
   LinearSolver m_linearSolver;
   bool m_jacobianValid = false;
   int m_numResiduals = 0;

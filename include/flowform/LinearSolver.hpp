@@ -27,10 +27,11 @@ class LinearSolver {
   /// Factors A (numeric; symbolic too on the first call). Throws std::runtime_error when
   /// the matrix is singular (the message says so, for the caller to report).
   void factor(const Teuchos::RCP<const CrsMatrix>& A);
-  /// x = A⁻¹ b with the current factors.
+  /// x = A⁻¹ b with the current factors, one back-substitution per column of b.
   void solve(const MultiVector& b, MultiVector& x);
 
   int numFactorizations() const { return m_numFactorizations; }
+  /// Back-substitutions (right-hand sides solved) so far.
   int numSolves() const { return m_numSolves; }
 
  private:

@@ -12,6 +12,9 @@
 //                     Σ_tools Boundary Power = Plastic + Friction + Penalty + Stabilization
 //                     holds to solver tolerance; the last two vanish as h → 0.
 //   Dead Zone       — area (volume) of the cells where |u| < Fraction × Reference Speed
+// Derivatives (SPEC §4, paper eq. 21): dφ/dh = ∂φ/∂h + ∂φ/∂q dq/dh is the same evaluation
+// on a directional-derivative Fad, x seeded along dq/dh and h seeded (the reactions' part
+// from Assembler::tangent). Dead Zone is piecewise constant in q and has none.
 // Forces are per unit depth in plane strain (for the modelled half when symmetric), total
 // in axisymmetric models.
 #pragma once
@@ -29,6 +32,8 @@
 
 namespace flowform {
 
+struct SensitivityParameter;
+
 class Responses {
  public:
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -40,7 +45,31 @@ class Responses {
   std::map<std::string, double> evaluate(const Vector& xOwned, const Mesh& mesh, const DofMap& dofMap,
                                          const Assembler& assembler, const std::vector<ContactWall>& walls) const;
 
+  /// dφ/dh of every response but Dead Zone, with dxOwned = dq/dh: the total derivative
+  /// along (dq/dh, h), the same on every rank.
+  std::map<std::string, double> derivatives(const Vector& xOwned, const Vector& dxOwned, const SensitivityParameter& h,
+                                            const Mesh& mesh, const DofMap& dofMap, const Assembler& assembler,
+                                            const std::vector<ContactWall>& walls) const;
+
+  /// Response names, in the case's order.
+  std::vector<std::string> names() const {
+    std::vector<std::string> n;
+    for (const Response& r : m_responses) n.push_back(r.name);
+    return n;
+  }
+  /// Whether the response has a derivative (all but Dead Zone).
+  bool isDifferentiable(const std::string& name) const {
+    for (const Response& r : m_responses)
+      if (r.name == name) return r.type != "Dead Zone";
+    return false;
+  }
+
  private:
+  /// Values (Scalar double), or values and derivatives along (dx, h) (an AD Scalar).
+  template <typename Scalar>
+  std::map<std::string, Scalar> evaluateAs(const Vector& xOwned, const Vector* dxOwned, const SensitivityParameter* h,
+                                           const Mesh& mesh, const DofMap& dofMap, const Assembler& assembler,
+                                           const std::vector<ContactWall>& walls) const;
   struct Response {
     std::string name, type, boundary, component;
     double fraction = 0.01, referenceSpeed = 1.0;

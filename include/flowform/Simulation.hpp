@@ -10,13 +10,16 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "flowform/Assembler.hpp"
+#include "flowform/FiniteDifferenceCheck.hpp"
 #include "flowform/BoundaryConditions.hpp"
 #include "flowform/DofMap.hpp"
 #include "flowform/FlowModel.hpp"
 #include "flowform/Mesh.hpp"
 #include "flowform/NonlinearSolver.hpp"
 #include "flowform/Responses.hpp"
+#include "flowform/Sensitivity.hpp"
 #include "flowform/contact/ContactWall.hpp"
+#include "flowform/contact/StatusLoop.hpp"
 #include "flowform/io/FieldSet.hpp"
 
 namespace flowform {
@@ -33,7 +36,8 @@ class Simulation {
              const Teuchos::RCP<const Comm>& comm);
   ~Simulation();
 
-  /// Solves the flow problem. The report says whether it converged.
+  /// Solves the flow problem, then, when the case asks, the sensitivities (DDM) and their
+  /// finite-difference check. The report says whether the flow solve converged.
   const SolveReport& run();
 
   /// summary.json, solution.h5/.xdmf and the boundary CSVs in `outDir` (created).
@@ -46,23 +50,27 @@ class Simulation {
   const Vector& solution() const { return *m_solution; }
   FlowModel& model() { return *m_model; }
   const SolveReport& report() const { return m_report; }
-  int exitStatus() const { return m_report.converged ? 0 : 3; }
+  /// 0; 3 when the flow solve did not converge, dq/dh is not finite, or a run of the
+  /// finite-difference check did not converge (the results are written all the same).
+  int exitStatus() const;
   const std::vector<ContactWall>& contactWalls() const { return m_walls; }
   int contactChanges() const { return m_contactChanges; }
   /// The case's responses at the current solution (empty before run()).
   const std::map<std::string, double>& functionals() const { return m_functionals; }
+  const Sensitivity& sensitivity() const { return *m_sensitivity; }
 
   /// Nodal velocity and pressure, and the cell fields the case asks for, gathered on rank 0
   /// (other ranks get empty arrays).
   FieldSet gatherFields() const;
 
  private:
-  /// Contact-status loop (SPEC §2): one change at a time, re-solving after each.
-  void runContactLoop(NonlinearSolver& solver);
   /// Penalty scales of every wall from the current solution.
   void updateWallScales(const Vector& x);
-  /// Pressure and velocity at every node of `wall`, on every rank.
-  void wallValues(const ContactWall& wall, std::vector<double>& p, std::vector<std::array<double, 2>>& u) const;
+  /// DDM sensitivities at the converged solution and, when asked, their FD check.
+  void runSensitivity();
+  /// The solve at h + delta from the converged state, with its contact loop; the case's
+  /// parameters, walls and model are restored afterwards.
+  PerturbedRun solvePerturbed(const SensitivityParameter& h, double delta);
 
   Teuchos::ParameterList m_params;
   Teuchos::RCP<const Comm> m_comm;
@@ -70,16 +78,20 @@ class Simulation {
   FlowPhysics m_physics;
   std::vector<ContactWall> m_walls;
   std::unique_ptr<Responses> m_responses;
+  std::unique_ptr<Sensitivity> m_sensitivity;
+  std::unique_ptr<FiniteDifferenceCheck> m_fdCheck;
   std::map<std::string, double> m_functionals;
   int m_contactChanges = 0;
   std::unique_ptr<DofMap> m_dofMap;
   std::unique_ptr<BoundaryConditions> m_bcs;
   std::unique_ptr<Assembler> m_assembler;
   std::unique_ptr<FlowModel> m_model;
+  std::unique_ptr<ContactStatusLoop> m_statusLoop;
   Teuchos::RCP<Vector> m_solution;
   SolveReport m_report;
   double m_setupSeconds = 0.0;
   double m_solveSeconds = 0.0;
+  double m_sensitivitySeconds = 0.0;
 };
 
 }  // namespace flowform

@@ -8,6 +8,17 @@
 
 namespace flowform {
 
+const char* frictionBranchName(FrictionBranch b) {
+  switch (b) {
+    case FrictionBranch::Free: return "free";
+    case FrictionBranch::NoFriction: return "no_friction";
+    case FrictionBranch::Stick: return "stick";
+    case FrictionBranch::Slip: return "slip";
+    case FrictionBranch::SlipTresca: return "slip_tresca";
+  }
+  return "?";
+}
+
 Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
   static Teuchos::RCP<Teuchos::ParameterList> valid;
   if (!valid.is_null()) return valid;

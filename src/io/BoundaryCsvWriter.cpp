@@ -106,6 +106,8 @@ void writeBoundaryCsv(const std::string& outDir, const Mesh& mesh, const Boundar
   for (const Field* f : extra) {
     if (f->components == 1) {
       text += "," + csvName(f->name);
+    } else if (!f->tangentialName.empty()) {
+      text += "," + csvName(f->tangentialName) + "," + csvName(f->normalName);
     } else {
       text += "," + csvName(f->name + "_x") + "," + csvName(f->name + "_y");
     }
@@ -126,11 +128,20 @@ void writeBoundaryCsv(const std::string& outDir, const Mesh& mesh, const Boundar
       appendNumber(text, v);
       text += ',';
     }
-    for (const Field* f : extra)
+    for (const Field* f : extra) {
+      if (f->components == 2 && !f->tangentialName.empty()) {
+        const double vx = f->values[2 * node], vy = f->values[2 * node + 1];
+        for (double v : {-vx * ny + vy * nx, vx * nx + vy * ny}) {
+          appendNumber(text, v);
+          text += ',';
+        }
+        continue;
+      }
       for (int c = 0; c < f->components; ++c) {
         appendNumber(text, f->values[f->components * node + c]);
         text += ',';
       }
+    }
     text.back() = '\n';
   }
 

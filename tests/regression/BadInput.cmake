@@ -108,6 +108,20 @@ flowform_exit_test(bad_input_cutoff_negative CASE channel_small.xml
   SET "Material/Strain Rate Cutoff=-1e-3"
   CONTAINS "Strain Rate Cutoff")
 
+# --- sensitivity (SPEC §4) ----------------------------------------------------------------------
+flowform_exit_test(bad_input_sensitivity_unknown_parameter CASE channel_small.xml
+  SET "Sensitivity/Parameters={Yield Stres}"
+  CONTAINS "Yield Stres" "'Yield Stress'" "'Rate Exponent'")
+flowform_exit_test(bad_input_sensitivity_friction_without_walls CASE channel_small.xml
+  SET "Sensitivity/Parameters={Friction Coefficient}"
+  CONTAINS "Friction Coefficient" "no contact wall")
+flowform_exit_test(bad_input_sensitivity_unknown_entry CASE channel_small.xml
+  SET "Sensitivity/Finite Diference Step=1e-4"
+  CONTAINS "Finite Diference Step")
+flowform_exit_test(bad_input_sensitivity_zero_step CASE channel_small.xml
+  SET "Sensitivity/Parameters={Yield Stress}" "Sensitivity/Finite Difference Step=0"
+  CONTAINS "Finite Difference Step")
+
 # --- mesh and groups ---------------------------------------------------------------------------
 flowform_exit_test(bad_input_missing_mesh_file CASE channel_small.xml
   SET "Mesh/File=nosuch_mesh.geo"

@@ -15,3 +15,12 @@ add_test(NAME parallel_equals_serial_extrusion
                  $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml
                  ${CMAKE_CURRENT_BINARY_DIR}/parallel_extrusion)
 set_tests_properties(parallel_equals_serial_extrusion PROPERTIES LABELS "regression")
+# Sensitivities on 2 ranks: ∂R/∂h assembled per partition (the friction couples wall
+# neighbours across it), the DDM solve through the gathered direct solver; du/dh, dp/dh
+# compared field by field.
+add_test(NAME parallel_equals_serial_sensitivity
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
+                 $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml
+                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_sensitivity
+                 --set "Sensitivity/Parameters={Friction Coefficient, Yield Stress, Rate Exponent}")
+set_tests_properties(parallel_equals_serial_sensitivity PROPERTIES LABELS "regression")

@@ -151,6 +151,111 @@ TEUCHOS_UNIT_TEST(ContactWall, TangentMatchesFiniteDifferences) {
   }
 }
 
+// ---------------------------------------------------------------------------------------
+// Parameter derivatives ∂R/∂ν, ∂R/∂m (SPEC §4, paper eq. 28): the same law with the friction
+// parameters as PScalar = SFad<double, 1> (dofs constant Fads), against central differences.
+// ---------------------------------------------------------------------------------------
+
+using PFad = Sacado::Fad::SFad<double, 1>;
+
+/// ∂R/∂h of node k's residual by AD; h = ν (which = 0) or m (which = 1).
+std::array<double, 2> parameterDerivative(const ContactWall& wall, int k, int which, const double* u0, const double* p0,
+                                          FrictionBranch* branch = nullptr) {
+  const FrictionParameters<double> fp0 = wall.frictionParameters();
+  const FrictionParameters<PFad> fp{which == 0 ? PFad(1, 0, fp0.frictionCoefficient) : PFad(fp0.frictionCoefficient),
+                                    which == 1 ? PFad(1, 0, fp0.shearFactor) : PFad(fp0.shearFactor)};
+  PFad u[2] = {u0[0], u0[1]}, p[3] = {p0[0], p0[1], p0[2]}, R[2] = {0.0, 0.0};
+  wall.addNodeResidual(k, fp, u, p, R);
+  if (branch) wall.tangentialForce(k, fp, u, p, branch);
+  return {R[0].dx(0), R[1].dx(0)};
+}
+
+/// The same by central differences of the double residual, step δ on h.
+std::array<double, 2> parameterDifference(const ContactWall& wall, int k, int which, const double* u0, const double* p0,
+                                          double delta) {
+  std::array<double, 2> d{};
+  for (double sign : {1.0, -1.0}) {
+    FrictionParameters<double> fp = wall.frictionParameters();
+    (which == 0 ? fp.frictionCoefficient : fp.shearFactor) += sign * delta;
+    double R[2] = {0.0, 0.0};
+    wall.addNodeResidual(k, fp, u0, p0, R);
+    for (int c = 0; c < 2; ++c) d[c] += sign * R[c] / (2 * delta);
+  }
+  return d;
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, FrictionParameterDerivativesMatchFiniteDifferences) {
+  // Inside a branch the residual is linear in ν and m (slip: ±ν P or ±m S/√3; stick and
+  // tension: independent), so central differences are exact up to round-off ~eps |R|/δ
+  // = 1e-16 · O(1) / 1e-6 = 1e-10; the tolerance 1e-8 (absolute, |∂R/∂h| = O(0.1..1))
+  // leaves 100×. δ = 1e-6 keeps every case at least 1e-3 away from a branch change.
+  const double delta = 1e-6;
+  const double p[3] = {1.0, 2.0, 4.0}, tension[3] = {-1.0, -2.0, -4.0};
+  const double slip[2] = {0.5, 0.02}, stick[2] = {1e-4, 0.003};
+  struct Case {
+    const char* law;
+    double nu, m;
+    const double* u;
+    const double* p;
+    FrictionBranch branch;
+  };
+  const Case cases[] = {{"Coulomb", 0.2, 0.0, slip, p, FrictionBranch::Slip},
+                        {"Coulomb", 0.2, 0.0, stick, p, FrictionBranch::Stick},
+                        {"Coulomb", 0.2, 0.0, slip, tension, FrictionBranch::NoFriction},
+                        {"Coulomb", 0.0, 0.0, slip, p, FrictionBranch::Slip},  // ν = 0 under compression: slip
+                        {"Tresca", 0.0, 0.5, slip, p, FrictionBranch::Slip},
+                        {"Tresca", 0.0, 0.5, stick, p, FrictionBranch::Stick},
+                        {"Orowan", 0.1, 0.5, slip, p, FrictionBranch::Slip},         // ν P < m S/√3
+                        {"Orowan", 0.5, 0.2, slip, p, FrictionBranch::SlipTresca},   // m S/√3 < ν P
+                        {"Orowan", 0.2, 0.5, stick, p, FrictionBranch::Stick}};
+  for (const Case& c : cases) {
+    const ContactWall wall = makeWall(c.law, c.nu, c.m);
+    for (int which : {0, 1}) {
+      FrictionBranch branch;
+      const auto ad = parameterDerivative(wall, 1, which, c.u, c.p, &branch);
+      const auto fd = parameterDifference(wall, 1, which, c.u, c.p, delta);
+      out << c.law << " ν = " << c.nu << " m = " << c.m << " " << frictionBranchName(branch) << " ∂R/∂"
+          << (which == 0 ? "ν" : "m") << " = (" << ad[0] << ", " << ad[1] << "), FD (" << fd[0] << ", " << fd[1]
+          << ")\n";
+      TEST_ASSERT(branch == c.branch);
+      for (int k = 0; k < 2; ++k) TEST_FLOATING_EQUALITY(ad[k] + 1.0, fd[k] + 1.0, 1e-8);
+    }
+  }
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, FrictionCoefficientSensitivityIsExactlyZeroInStickAndTension) {
+  // Paper eq. 28: in stick and without compression ∂f/∂ν = 0 exactly (not to round-off).
+  const double p[3] = {1.0, 2.0, 4.0}, tension[3] = {-1.0, -2.0, -4.0};
+  const double slip[2] = {0.5, 0.0}, stick[2] = {1e-4, 0.0};
+  for (double nu : {0.0, 0.2}) {
+    const ContactWall wall = makeWall("Coulomb", nu);
+    FrictionBranch branch;
+    // In tension (also at ν = 0): no friction, no sensitivity.
+    auto d = parameterDerivative(wall, 1, 0, slip, tension, &branch);
+    TEST_ASSERT(branch == FrictionBranch::NoFriction);
+    TEST_EQUALITY_CONST(d[0], 0.0);
+    TEST_EQUALITY_CONST(d[1], 0.0);
+    // Slip under compression: ∂g/∂ν = P sign(u_t) = f̂/ν, P = Σ_s L(p_k/3 + p_o/6).
+    const double P = kL * (2.0 / 3 + 1.0 / 6) + kL * (2.0 / 3 + 4.0 / 6);
+    d = parameterDerivative(wall, 1, 0, slip, p, &branch);
+    TEST_ASSERT(branch == FrictionBranch::Slip);
+    TEST_FLOATING_EQUALITY(d[0], P, 1e-14);  // t = (1, 0)
+    TEST_EQUALITY_CONST(d[1], 0.0);
+  }
+  const ContactWall wall = makeWall("Coulomb", 0.2);
+  FrictionBranch branch;
+  const auto d = parameterDerivative(wall, 1, 0, stick, p, &branch);
+  TEST_ASSERT(branch == FrictionBranch::Stick);
+  TEST_EQUALITY_CONST(d[0], 0.0);
+  TEST_EQUALITY_CONST(d[1], 0.0);
+  // A free node has no contact term at all.
+  ContactWall released = makeWall("Coulomb", 0.2);
+  released.setActive(1, false);
+  const auto f = parameterDerivative(released, 1, 0, slip, p, &branch);
+  TEST_ASSERT(branch == FrictionBranch::Free);
+  TEST_EQUALITY_CONST(f[0], 0.0);
+}
+
 TEUCHOS_UNIT_TEST(ContactWall, StatusChangesAtTheZoneLimitOneAtATime) {
   ContactWall wall = makeWall("Coulomb", 0.2);
   const std::vector<std::array<double, 2>> u(3, {0.0, 0.0});

@@ -325,6 +325,27 @@ TEUCHOS_UNIT_TEST(BoundaryCsv, TangentialAndNormalVelocity) {
   TEST_ASSERT(!fs::exists(dir.path + "/boundary_corner.csv.tmp"));
 }
 
+TEUCHOS_UNIT_TEST(BoundaryCsv, VectorFieldsNamingTheirComponentsGoAsTangentialAndNormal) {
+  // A sensitivity field du/dh names its CSV columns: written like u_t, u_n, not as x, y.
+  TempDir dir;
+  const Mesh mesh = twoTriangles();
+  FieldSet fields = someFields();
+  fields.nodal.back().tangentialName = "du_t_dh";
+  fields.nodal.back().normalName = "du_n_dh";
+  BoundaryCurve right;
+  right.name = "right";
+  right.nodes = {1, 2};
+  right.arcLength = {0.0, 1.0};
+  right.normals = {{1.0, 0.0}, {1.0, 0.0}};  // t = (0, 1)
+  writeBoundaryCsv(dir.path, mesh, right, fields);
+  std::string header;
+  const auto rows = readCsv(dir.path + "/boundary_right.csv", header);
+  TEST_EQUALITY(header, "s,x,y,u_t,u_n,p,contact_status,du_t_dh,du_n_dh");
+  // node 1: dU/dh = (1.5, 2.5) -> t 2.5, n 1.5; node 2: (0, 0).
+  TEST_COMPARE_ARRAYS(rows[0], std::vector<double>({0, 1, 0, -4, 3, 11, 0, 2.5, 1.5}));
+  TEST_COMPARE_ARRAYS(rows[1], std::vector<double>({1, 1, 1, 1e-300, 0.1, 12.5, 2, 0, 0}));
+}
+
 TEUCHOS_UNIT_TEST(BoundaryCsv, MissingOrBadFieldsThrow) {
   TempDir dir;
   const Mesh mesh = twoTriangles();

@@ -16,6 +16,13 @@
 // A segment is active when both its nodes are. μ_k and σ̄ are taken from the solution at
 // the start of each flow solve and held during its Newton iterations (setScales).
 //
+// The law is templated on the dof scalar (Scalar) and on the friction parameters ν, m
+// (PScalar, FrictionParameters): the same code gives values, the AD tangent and ∂/∂ν, ∂/∂m
+// (SPEC §4, paper eq. 28). The branch is decided by the compression measure, not by f̂:
+// Coulomb P_k = Σ_s ∫_s N_k p⁺_h W ds > 0, so at ν = 0 a compressed node slips with g = 0
+// and ∂g/∂ν = P_k sign(u_t), while a node in tension (P_k ≤ 0) has g = ∂g/∂ν = 0; in stick
+// g = α_t u_t does not depend on ν or m, so ∂g/∂ν = ∂g/∂m = 0 exactly.
+//
 // Nodal normal: the curve's (bisector of the two segment normals inside one wall; the
 // segment's own at a wall's end). Where two walls meet at a corner, the node gets each
 // wall's penalty along that wall's normal, so both velocity components are held there.
@@ -35,6 +42,19 @@
 namespace flowform {
 
 enum class FrictionLaw { None, Coulomb, Tresca, Orowan, Norton };
+
+/// The friction parameters that sensitivity analysis may seed as AD variables.
+template <typename PScalar>
+struct FrictionParameters {
+  PScalar frictionCoefficient;  ///< ν (Coulomb, Orowan)
+  PScalar shearFactor;          ///< m (Tresca, Orowan)
+};
+
+/// Which branch of the law a wall node is on (a kink of the law lies between branches):
+/// Free (not in contact), NoFriction (active but not compressed, or law None), Stick,
+/// Slip (Coulomb-limited, or Tresca/Norton), SlipTresca (Orowan limited by m σ̄/√3).
+enum class FrictionBranch { Free, NoFriction, Stick, Slip, SlipTresca };
+const char* frictionBranchName(FrictionBranch b);
 
 struct ContactWallSettings {
   FrictionLaw law = FrictionLaw::Coulomb;
@@ -91,15 +111,40 @@ class ContactWall {
   /// Per wall node: viscosity μ and flow stress σ̄ (largest over the adjacent cells).
   void setScales(std::vector<double> viscosity, std::vector<double> flowStress);
   void setFrictionCoefficient(double nu) { m_settings.frictionCoefficient = nu; }
+  void setShearFactor(double m) { m_settings.shearFactor = m; }
+  /// ν and m as the case gives them.
+  FrictionParameters<double> frictionParameters() const {
+    return {m_settings.frictionCoefficient, m_settings.shearFactor};
+  }
+  /// Whether ν (Coulomb, Orowan) or m (Tresca, Orowan) enters this wall's law.
+  bool usesFrictionCoefficient() const {
+    return m_settings.law == FrictionLaw::Coulomb || m_settings.law == FrictionLaw::Orowan;
+  }
+  bool usesShearFactor() const { return m_settings.law == FrictionLaw::Tresca || m_settings.law == FrictionLaw::Orowan; }
 
   /// The two momentum rows of wall node k: dofs are u_k (2) and the pressures of
-  /// previous(k), k, next(k) (an absent neighbour's is ignored). Adds into R[2].
+  /// previous(k), k, next(k) (an absent neighbour's is ignored). Adds into R[2]. The
+  /// friction parameters are `fp` (PScalar: double, or an AD type when ∂/∂ν, ∂/∂m are
+  /// wanted; Scalar must then be an AD type of the same kind).
+  template <typename Scalar, typename PScalar>
+  void addNodeResidual(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p, Scalar* R) const;
   template <typename Scalar>
-  void addNodeResidual(int k, const Scalar* u, const Scalar* p, Scalar* R) const;
+  void addNodeResidual(int k, const Scalar* u, const Scalar* p, Scalar* R) const {
+    addNodeResidual(k, frictionParameters(), u, p, R);
+  }
 
-  /// Tangential force g_k (positive along t_k) and whether the node sticks, for output.
+  /// Tangential force g_k (positive along t_k) and the branch of the law it is on.
+  template <typename Scalar, typename PScalar>
+  Scalar tangentialForce(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
+                         FrictionBranch* branch = nullptr) const;
+  /// g_k with the case's ν, m, and whether the node sticks, for output.
   template <typename Scalar>
-  Scalar tangentialForce(int k, const Scalar* u, const Scalar* p, bool* sticks = nullptr) const;
+  Scalar tangentialForce(int k, const Scalar* u, const Scalar* p, bool* sticks = nullptr) const {
+    FrictionBranch b;
+    const Scalar g = tangentialForce(k, frictionParameters(), u, p, &b);
+    if (sticks) *sticks = b == FrictionBranch::Stick;
+    return g;
+  }
 
   /// The next status change (SPEC §2): an active node in tension (p < −pressureTolerance)
   /// is released, a free node that penetrates (u·n > penetrationTolerance) is activated;
@@ -113,8 +158,11 @@ class ContactWall {
                           int* unsettled = nullptr) const;
 
  private:
-  template <typename Scalar>
-  Scalar lumpedFrictionBound(int k, const Scalar* p) const;
+  /// f̂_k; `loaded` is false when the node carries no friction (Coulomb, Orowan: P_k ≤ 0);
+  /// `trescaLimited` when Orowan takes the m σ̄/√3 bound.
+  template <typename Scalar, typename PScalar>
+  Scalar lumpedFrictionBound(int k, const FrictionParameters<PScalar>& fp, const Scalar* p, bool& loaded,
+                             bool& trescaLimited) const;
   double weight(int k) const;  ///< W_k: 2π r_k or 1
 
   BoundaryCurve m_curve;
@@ -133,75 +181,94 @@ inline double ContactWall::weight(int k) const {
   return m_geometry == Geometry::Axisymmetric ? 2.0 * M_PI * m_coords[k][0] : 1.0;
 }
 
-template <typename Scalar>
-Scalar ContactWall::lumpedFrictionBound(int k, const Scalar* p) const {
-  // f̂_k = Σ_s ∫_s N_k τ_h W ds over active segments, 2-point Gauss (exact: N, τ_h, W linear).
+template <typename Scalar, typename PScalar>
+Scalar ContactWall::lumpedFrictionBound(int k, const FrictionParameters<PScalar>& fp, const Scalar* p, bool& loaded,
+                                        bool& trescaLimited) const {
+  // P_k = Σ_s ∫_s N_k p⁺_h W ds and S_k = Σ_s ∫_s N_k σ̄_h W ds over active segments,
+  // 2-point Gauss (exact: N, p_h, σ̄_h, W linear).
   const double gp[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
-  const bool coulomb = m_settings.law == FrictionLaw::Coulomb || m_settings.law == FrictionLaw::Orowan;
-  const bool tresca = m_settings.law == FrictionLaw::Tresca || m_settings.law == FrictionLaw::Orowan;
-  Scalar fCoulomb = 0.0;
-  double fTresca = 0.0;
+  const bool coulomb = usesFrictionCoefficient();
+  const bool tresca = usesShearFactor();
+  Scalar pressureIntegral = 0.0;
+  double stressIntegral = 0.0;
   const int neighbours[2] = {previous(k), next(k)};
   for (int side = 0; side < 2; ++side) {
     const int o = neighbours[side];
     if (o < 0 || !m_active[o]) continue;
     const double L = std::hypot(m_coords[o][0] - m_coords[k][0], m_coords[o][1] - m_coords[k][1]);
-    const Scalar pk = p[1] > 0.0 ? p[1] : Scalar(0.0);                         // p⁺_k
+    const Scalar pk = p[1] > 0.0 ? p[1] : Scalar(0.0);                                  // p⁺_k
     const Scalar po = p[side == 0 ? 0 : 2] > 0.0 ? p[side == 0 ? 0 : 2] : Scalar(0.0);  // p⁺_o
     for (double s : gp) {
       const double Nk = 1.0 - s, No = s;
       double w = 0.5 * L;
       if (m_geometry == Geometry::Axisymmetric) w *= 2.0 * M_PI * (Nk * m_coords[k][0] + No * m_coords[o][0]);
-      if (coulomb) fCoulomb += w * Nk * (Nk * pk + No * po);
-      if (tresca) fTresca += w * Nk * (Nk * m_flowStress[k] + No * m_flowStress[o]);
+      if (coulomb) pressureIntegral += w * Nk * (Nk * pk + No * po);
+      if (tresca) stressIntegral += w * Nk * (Nk * m_flowStress[k] + No * m_flowStress[o]);
     }
   }
-  fCoulomb *= m_settings.frictionCoefficient;
-  fTresca *= m_settings.shearFactor / std::sqrt(3.0);
+  trescaLimited = false;
+  // Coulomb and Orowan act only under compression; Tresca wherever the segment is active.
+  loaded = coulomb ? pressureIntegral > 0.0 : stressIntegral > 0.0;
+  const Scalar fCoulomb = fp.frictionCoefficient * pressureIntegral;
+  const Scalar fTresca = fp.shearFactor * (stressIntegral / std::sqrt(3.0));
   if (m_settings.law == FrictionLaw::Coulomb) return fCoulomb;
-  if (m_settings.law == FrictionLaw::Tresca) return Scalar(fTresca);
-  return fCoulomb < fTresca ? fCoulomb : Scalar(fTresca);  // Orowan
+  if (m_settings.law == FrictionLaw::Tresca) return fTresca;
+  trescaLimited = !(fCoulomb < fTresca);  // Orowan: min(ν P, m S/√3)
+  return trescaLimited ? fTresca : fCoulomb;
 }
 
-template <typename Scalar>
-Scalar ContactWall::tangentialForce(int k, const Scalar* u, const Scalar* p, bool* sticks) const {
-  if (sticks) *sticks = false;
-  if (!m_active[k] || m_settings.law == FrictionLaw::None) return Scalar(0.0);
-  const auto& n = m_curve.normals[k];
-  const Scalar ut = -n[1] * u[0] + n[0] * u[1];  // u·t, t = (−n_y, n_x)
-  if (m_settings.law == FrictionLaw::Norton) {
-    double tributary = 0.0;  // Σ_s ∫_s N_k W ds
-    for (int o : {previous(k), next(k)}) {
-      if (o < 0 || !m_active[o]) continue;
-      const double L = std::hypot(m_coords[o][0] - m_coords[k][0], m_coords[o][1] - m_coords[k][1]);
-      tributary += m_geometry == Geometry::Axisymmetric
-                       ? 2.0 * M_PI * L * (m_coords[k][0] / 3.0 + m_coords[o][0] / 6.0)
-                       : 0.5 * L;
+template <typename Scalar, typename PScalar>
+Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
+                                    FrictionBranch* branch) const {
+  FrictionBranch b = FrictionBranch::Free;
+  Scalar g = 0.0;
+  if (m_active[k]) {
+    b = FrictionBranch::NoFriction;
+    const auto& n = m_curve.normals[k];
+    const Scalar ut = -n[1] * u[0] + n[0] * u[1];  // u·t, t = (−n_y, n_x)
+    if (m_settings.law == FrictionLaw::Norton) {
+      double tributary = 0.0;  // Σ_s ∫_s N_k W ds
+      for (int o : {previous(k), next(k)}) {
+        if (o < 0 || !m_active[o]) continue;
+        const double L = std::hypot(m_coords[o][0] - m_coords[k][0], m_coords[o][1] - m_coords[k][1]);
+        tributary += m_geometry == Geometry::Axisymmetric
+                         ? 2.0 * M_PI * L * (m_coords[k][0] / 3.0 + m_coords[o][0] / 6.0)
+                         : 0.5 * L;
+      }
+      using std::pow;
+      const double eps = m_settings.nortonRegularization;  // u_t² + ε² > 0: pow is differentiable
+      b = FrictionBranch::Slip;
+      g = m_settings.nortonCoefficient * tributary * pow(ut * ut + eps * eps, 0.5 * (m_settings.nortonExponent - 1.0)) * ut;
+    } else if (m_settings.law != FrictionLaw::None) {
+      bool loaded = false, trescaLimited = false;
+      const Scalar fHat = lumpedFrictionBound(k, fp, p, loaded, trescaLimited);
+      if (loaded) {  // otherwise no compression: no friction, and ∂/∂ν = 0 (eq. 28)
+        const double alphaT = m_settings.tangentialPenalty * m_viscosity[k] * weight(k);
+        const Scalar stick = alphaT * ut;  // f* = α_t |u_t|, the sticking bound
+        if ((stick >= 0.0 ? stick : Scalar(-stick)) <= fHat) {
+          b = FrictionBranch::Stick;  // independent of ν and m: ∂/∂ν = ∂/∂m = 0 (eq. 28)
+          g = stick;
+        } else {
+          b = trescaLimited ? FrictionBranch::SlipTresca : FrictionBranch::Slip;
+          g = ut >= 0.0 ? fHat : Scalar(-fHat);  // slip: f̂ opposing u_t
+        }
+      }
     }
-    using std::pow;
-    const double eps = m_settings.nortonRegularization;
-    return m_settings.nortonCoefficient * tributary * pow(ut * ut + eps * eps, 0.5 * (m_settings.nortonExponent - 1.0)) * ut;
   }
-  const Scalar fHat = lumpedFrictionBound(k, p);
-  if (!(fHat > 0.0)) return Scalar(0.0);  // no compression: no friction
-  const double alphaT = m_settings.tangentialPenalty * m_viscosity[k] * weight(k);
-  const Scalar stick = alphaT * ut;         // f* = α_t |u_t|, the sticking bound
-  if ((stick >= 0.0 ? stick : Scalar(-stick)) <= fHat) {
-    if (sticks) *sticks = true;
-    return stick;
-  }
-  return ut >= 0.0 ? fHat : Scalar(-fHat);  // slip: f̂ opposing u_t
+  if (branch) *branch = b;
+  return g;
 }
 
-template <typename Scalar>
-void ContactWall::addNodeResidual(int k, const Scalar* u, const Scalar* p, Scalar* R) const {
+template <typename Scalar, typename PScalar>
+void ContactWall::addNodeResidual(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
+                                  Scalar* R) const {
   if (!m_active[k]) return;
   const auto& n = m_curve.normals[k];
   const double alphaN = m_settings.normalPenalty * m_viscosity[k] * weight(k);
   const Scalar un = n[0] * u[0] + n[1] * u[1];
   R[0] += alphaN * un * n[0];
   R[1] += alphaN * un * n[1];
-  const Scalar g = tangentialForce(k, u, p);
+  const Scalar g = tangentialForce(k, fp, u, p);
   R[0] += g * (-n[1]);
   R[1] += g * n[0];
 }

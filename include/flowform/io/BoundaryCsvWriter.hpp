@@ -17,7 +17,8 @@ namespace flowform {
 /// leaves the material.
 /// `fields` must hold a nodal "velocity" (2 components) and "pressure" (1 component).
 /// Further nodal fields follow in their FieldSet order, a 2-component one as
-/// <name>_x,<name>_y; cell fields are not written. One row per curve node in curve order
+/// <name>_x,<name>_y (or, when the field names them, as its tangential and normal
+/// components under those names, e.g. du_t_dnu, du_n_dnu); cell fields are not written. One row per curve node in curve order
 /// (a closed curve does not repeat its first node). Numbers are in the shortest form that
 /// reads back to the same double; NaN/Inf as nan/inf. The file is written under a .tmp
 /// name and renamed into place, replacing an existing one.

@@ -11,6 +11,9 @@ struct Field {
   std::string name;    ///< as ParaView shows it, e.g. "velocity", "pressure"
   int components = 1;  ///< 1 (scalar) or 2 (2-D vector, written as 3-D with z = 0)
   std::vector<double> values;
+  /// A 2-component nodal field with these names set is written to the boundary CSVs as its
+  /// tangential and normal components (like u_t, u_n) under these names, not as x and y.
+  std::string tangentialName{}, normalName{};
 };
 
 struct FieldSet {

@@ -1,0 +1,93 @@
+// Sensitivity by direct differentiation (SPEC §4, paper §3). At the converged solution q of
+// R(q; h) = 0 the derivative of the equations along h is (paper eqs. 24–27)
+//
+//     K_t dq/dh = −∂R/∂h,        K_t = ∂R/∂q at the converged q,
+//
+// and a functional φ(q; h) has (eq. 21) dφ/dh = ∂φ/∂h + ∂φ/∂q dq/dh. ∂R/∂h comes from the
+// same templated residual with h seeded (Assembler::parameterDerivative); dφ/dh from the
+// responses evaluated on a directional-derivative Fad (Responses::derivatives).
+//
+// Cost: K_t is factored once for all parameters and each parameter costs one back-
+// substitution (all right-hand sides go to the direct solver as one MultiVector).
+// "Jacobian" chooses the factors: "Converged" assembles and factors K_t at the converged q
+// (one factorization); "Last Newton Iterate" reuses the factors NOX leaves, which belong to
+// the iterate before the converged one (no factorization; docs/sensitivity.md measures what
+// this costs in accuracy).
+//
+// Held fixed (docs/sensitivity.md): the contact penalty scales μ_k and the Tresca σ̄_k, which
+// the solver takes from the solution at the start of each Newton solve (ContactWall::
+// setScales); dq/dh is that of the problem with these scales frozen. The contact status is
+// fixed too: the derivative is that of the converged branch of every node.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+#include <nlohmann/json_fwd.hpp>
+
+#include "flowform/DofMap.hpp"
+#include "flowform/FlowModel.hpp"
+#include "flowform/Mesh.hpp"
+#include "flowform/Responses.hpp"
+#include "flowform/SensitivityParameter.hpp"
+#include "flowform/contact/ContactWall.hpp"
+
+namespace flowform {
+
+class Sensitivity {
+ public:
+  /// The "Sensitivity" sublist: Parameters, Jacobian, and the finite-difference check.
+  static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
+
+  /// `list` is the case's validated "Sensitivity" sublist, or null when the case has none
+  /// (then nothing is requested and compute() is never called). InputError for a bad
+  /// parameter name, a repeated one, or a response whose name a check entry uses.
+  Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls, const Responses& responses);
+
+  bool requested() const { return !m_parameters.empty(); }
+  const std::vector<SensitivityParameter>& parameters() const { return m_parameters; }
+  bool checkRequested() const { return requested() && m_check; }
+  /// The requested finite-difference step (absolute for ν and m, relative for σ0, γ, n).
+  double step() const { return m_step; }
+  /// Whether the finite-difference runs hold the base run's contact penalty scales.
+  bool holdScalesInCheck() const { return m_holdScales; }
+
+  /// dq/dh for every parameter at the converged x, then dφ/dh for every response.
+  void compute(FlowModel& model, const Vector& x, const Responses& responses, const Mesh& mesh, const DofMap& dofMap,
+               const std::vector<ContactWall>& walls);
+
+  bool computed() const { return !m_dqdh.is_null(); }
+  /// Column j is dq/dh_j (owned map). Only after compute().
+  const MultiVector& solutionDerivatives() const { return *m_dqdh; }
+  /// dφ/dh: response name → parameter name → value.
+  const std::map<std::string, std::map<std::string, double>>& responseDerivatives() const {
+    return m_responseDerivatives;
+  }
+  /// False when K_t could not be factored or a dq/dh holds NaN or Inf (singular K_t): the
+  /// run then exits 3, without sensitivities.
+  bool finite() const { return m_finite; }
+
+  /// "sensitivities" (response → parameter → dφ/dh) and "sensitivity" (what was done and
+  /// what it cost: factorizations, solves, the Jacobian used) into the summary.
+  void report(nlohmann::json& summary) const;
+
+ private:
+  std::vector<SensitivityParameter> m_parameters;
+  bool m_check = false;
+  double m_step = 2e-4;
+  bool m_holdScales = true;
+  bool m_lastNewtonJacobian = false;
+
+  Teuchos::RCP<MultiVector> m_dqdh;
+  std::map<std::string, std::map<std::string, double>> m_responseDerivatives;
+  bool m_finite = true;
+  int m_factorizations = 0, m_solves = 0;
+  std::string m_jacobianUsed;
+  double m_jacobianOffset = 0.0;  ///< ||q − q_J|| / ||q||, q_J where the factors were computed
+  std::vector<double> m_rhsNorms, m_solutionNorms;
+};
+
+}  // namespace flowform

@@ -1,0 +1,160 @@
+#include "flowform/Sensitivity.hpp"
+
+#include <cmath>
+#include <set>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <nlohmann/json.hpp>
+
+#include "flowform/InputError.hpp"
+#include "flowform/Log.hpp"
+
+namespace flowform {
+
+namespace {
+
+/// fd_check's entries for the solution fields (beside the responses).
+const char* const kFieldEntries[] = {"velocity_field", "pressure_field"};
+
+std::string trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\n");
+  const size_t b = s.find_last_not_of(" \t\n");
+  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+}  // namespace
+
+Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
+  static Teuchos::RCP<Teuchos::ParameterList> valid;
+  if (!valid.is_null()) return valid;
+  valid = Teuchos::rcp(new Teuchos::ParameterList("Sensitivity"));
+  valid->set("Parameters", Teuchos::Array<std::string>(),
+             "parameters h to differentiate by: Friction Coefficient (every wall's ν), Friction Coefficient:<wall>, "
+             "Shear Factor, Shear Factor:<wall>, Yield Stress, Rate Constant, Rate Exponent; none: no sensitivity work");
+  valid->set("Finite Difference Check", false,
+             "recompute every sensitivity by central differences (two more nonlinear solves per parameter, from the "
+             "converged state, each with its contact-status loop) and report the relative difference (fd_check)");
+  valid->set("Finite Difference Step", 2e-4,
+             "δ: absolute for ν and m (the paper's Δν = 2e-4), relative to |h| for σ0, γ, n",
+             Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(1e-300, 1.0)));
+  Teuchos::setStringToIntegralParameter<int>(
+      "Jacobian", "Converged",
+      "factors for the DDM solves: Converged (K_t assembled and factored at the converged q, one factorization) or "
+      "Last Newton Iterate (the factors NOX leaves, of the iterate before the converged one: none)",
+      Teuchos::tuple<std::string>("Converged", "Last Newton Iterate"), valid.get());
+  Teuchos::setStringToIntegralParameter<int>(
+      "Finite Difference Scales", "Held",
+      "contact penalty scales in the check's runs: Held (the base run's, as the DDM holds them: checks the DDM) or "
+      "Recomputed (from the start state at h ± δ, as a fresh solve would: measures what holding them neglects)",
+      Teuchos::tuple<std::string>("Held", "Recomputed"), valid.get());
+  return valid;
+}
+
+Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls,
+                         const Responses& responses) {
+  if (!list) return;
+  std::set<std::string> seen;
+  for (const std::string& given : list->get<Teuchos::Array<std::string>>("Parameters")) {
+    const std::string name = trim(given);
+    if (name.empty()) continue;
+    if (!seen.insert(name).second) throw InputError("Sensitivity/Parameters: '" + name + "' is given twice");
+    m_parameters.push_back(parseSensitivityParameter(name, walls));
+  }
+  m_check = list->get<bool>("Finite Difference Check");
+  m_step = list->get<double>("Finite Difference Step");
+  m_holdScales = list->get<std::string>("Finite Difference Scales") == "Held";
+  m_lastNewtonJacobian = list->get<std::string>("Jacobian") == "Last Newton Iterate";
+  if (m_check)
+    for (const std::string& name : responses.names())
+      for (const char* reserved : kFieldEntries)
+        if (name == reserved)
+          throw InputError("Responses/" + name + ": the name is taken by the finite-difference check's field entry; "
+                           "rename the response");
+}
+
+void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& responses, const Mesh& mesh,
+                          const DofMap& dofMap, const std::vector<ContactWall>& walls) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: sensitivity"));
+  const int factorizations0 = model.linearSolver().numFactorizations();
+  const int solves0 = model.linearSolver().numSolves();
+
+  // The factors: of K_t at the converged q, or those NOX left (the previous iterate's).
+  const auto point = model.jacobianPoint();
+  if (m_lastNewtonJacobian && model.hasJacobian() && !point.is_null()) {
+    Vector diff(x, Teuchos::Copy);
+    diff.update(-1.0, *point, 1.0);
+    m_jacobianOffset = diff.norm2() / std::max(x.norm2(), 1e-300);
+    m_jacobianUsed = "last Newton iterate";
+  } else {
+    if (m_lastNewtonJacobian) log() << "sensitivity: no factorization left by Newton; factoring K_t at the converged q\n";
+    m_jacobianOffset = 0.0;
+    m_jacobianUsed = "converged";
+    try {
+      model.computeJacobian(x);
+    } catch (const std::exception& e) {  // a singular K_t: no sensitivities, exit 3
+      log() << "sensitivity: " << e.what() << "\n";
+      m_finite = false;
+      m_factorizations = model.linearSolver().numFactorizations() - factorizations0;
+      return;
+    }
+  }
+
+  // K_t dq/dh_j = −∂R/∂h_j: one MultiVector, one back-substitution per column.
+  const size_t numParameters = m_parameters.size();
+  MultiVector rhs(x.getMap(), numParameters);
+  m_dqdh = Teuchos::rcp(new MultiVector(x.getMap(), numParameters));
+  for (size_t j = 0; j < numParameters; ++j) {
+    auto column = rhs.getVectorNonConst(j);
+    model.assembler().parameterDerivative(x, m_parameters[j], *column);
+    column->scale(-1.0);
+  }
+  model.solve(rhs, *m_dqdh);
+  m_rhsNorms.assign(numParameters, 0.0);
+  m_solutionNorms.assign(numParameters, 0.0);
+  rhs.norm2(Teuchos::ArrayView<double>(m_rhsNorms));
+  m_dqdh->norm2(Teuchos::ArrayView<double>(m_solutionNorms));
+  m_finite = true;
+  for (double n : m_solutionNorms) m_finite = m_finite && std::isfinite(n);
+  m_factorizations = model.linearSolver().numFactorizations() - factorizations0;
+  m_solves = model.linearSolver().numSolves() - solves0;
+
+  m_responseDerivatives.clear();
+  for (size_t j = 0; j < numParameters; ++j) {
+    log() << "sensitivity: " << m_parameters[j].name << ": |dR/dh| = " << m_rhsNorms[j]
+          << ", |dq/dh| = " << m_solutionNorms[j] << "\n";
+    if (!m_finite) continue;
+    const auto d = responses.derivatives(x, *m_dqdh->getVector(j), m_parameters[j], mesh, dofMap, model.assembler(),
+                                         walls);
+    for (const auto& [name, value] : d) {
+      m_responseDerivatives[name][m_parameters[j].name] = value;
+      log() << "sensitivity:   d" << name << "/dh = " << value << "\n";
+    }
+  }
+  if (!m_finite) log() << "sensitivity: dq/dh is not finite (singular Jacobian?)\n";
+}
+
+void Sensitivity::report(nlohmann::json& summary) const {
+  nlohmann::json& s = summary["sensitivities"];
+  s = nlohmann::json::object();
+  for (const auto& [response, byParameter] : m_responseDerivatives)
+    for (const auto& [parameter, value] : byParameter) s[response][parameter] = value;
+
+  nlohmann::json parameters = nlohmann::json::array();
+  for (size_t j = 0; j < m_parameters.size(); ++j) {
+    nlohmann::json p = {{"name", m_parameters[j].name}, {"symbol", m_parameters[j].symbol}};
+    if (j < m_rhsNorms.size()) {
+      p["dR_dh_norm"] = m_rhsNorms[j];
+      p["dq_dh_norm"] = m_solutionNorms[j];
+    }
+    parameters.push_back(p);
+  }
+  summary["sensitivity"] = {{"parameters", parameters},
+                            {"factorizations", m_factorizations},
+                            {"solves", m_solves},
+                            {"jacobian", m_jacobianUsed.empty() ? nlohmann::json(nullptr) : nlohmann::json(m_jacobianUsed)},
+                            {"jacobian_offset", m_jacobianOffset},
+                            {"finite", m_finite}};
+}
+
+}  // namespace flowform

@@ -1,0 +1,168 @@
+#!/usr/bin/python3
+"""Whole-run checks of the sensitivity analysis (SPEC §4, docs/sensitivity.md).
+
+usage: sensitivity_checks.py SUBCOMMAND FLOWFORM SOURCE_DIR WORK_DIR [options]
+
+subcommands
+  channel     channel (Q1, N = 16, n = 5, σ0 = 0.5): du/dσ0 and du/dn (and dp/dh) by DDM vs the
+              built-in central differences, relative difference (max norm) < 1e-5; one
+              factorization for both parameters and one back-substitution each; the fields in
+              solution.h5 and the columns in the boundary CSVs.
+  extrusion   xml/extrusion.xml at ν in --nu (default 0.05,0.1,0.3): dF/dν and d(mean ram
+              pressure)/dν vs central differences < 1e-5 where no node switches (a switch must
+              be flagged one_sided with the nodes listed, and is then excluded).
+  one-sided   the extrusion at ν = 0.05 with δ = 8e-4: a container node goes from slip to stick
+              at ν + δ; the entries must say one_sided, list that node, and name the side on
+              which nothing changed.
+  no-work     the channel without a Sensitivity list, with one (DDM only), and with an empty
+              Parameters array: the first and last do no sensitivity work (no factorization,
+              solve, field or column beyond the flow solve's), the second exactly one
+              factorization and one solve per parameter more.
+
+Tolerances. The central difference errs by truncation (δ²/6)|φ'''| plus the nonlinear solver's
+error divided by δ. The runs converge to ||F|| <= 1e-10 and ||Δx|| <= 1e-8 ||x|| with Newton's
+quadratic rate, so the solver error in φ is ~1e-14 |φ'| δ (measured: the rel. difference keeps
+falling as δ² down to δ = 1e-5, docs/sensitivity.md); with δ = 2e-4 (absolute on ν, relative
+on σ0, n) the truncation measured is <= 1.2e-6 (dF/dν) and <= 2e-7 (channel fields), so 1e-5
+holds with a margin of 8 or more.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+import h5py
+
+TOL = 1e-5
+
+
+def run(flowform, case, outdir, sets, expect=0):
+    cmd = [flowform, case, "-o", outdir, "--quiet"]
+    for s in sets:
+        cmd += ["--set", s]
+    status = subprocess.run(cmd).returncode
+    if status != expect:
+        raise SystemExit(f"flowform exited {status}, expected {expect}: {' '.join(cmd)}")
+    with open(os.path.join(outdir, "summary.json")) as f:
+        return json.load(f)
+
+
+class Checker:
+    def __init__(self):
+        self.failed = 0
+
+    def check(self, ok, what):
+        print(("ok   " if ok else "FAIL ") + what)
+        self.failed += 0 if ok else 1
+
+
+def csv_header(path):
+    with open(path) as f:
+        return f.readline().strip().split(",")
+
+
+def channel(args, c):
+    case = os.path.join(args.source, "xml", "channel.xml")
+    s = run(args.flowform, case, os.path.join(args.work, "channel"),
+            ["Sensitivity/Parameters={Yield Stress, Rate Exponent}", "Sensitivity/Finite Difference Check=true",
+             f"Sensitivity/Finite Difference Step={args.step}"])
+    sens = s["sensitivity"]
+    c.check(sens["factorizations"] == 1, f"one factorization for both parameters ({sens['factorizations']})")
+    c.check(sens["solves"] == 2, f"one back-substitution per parameter ({sens['solves']} for 2)")
+    c.check(sens["finite_difference"]["runs"] == 4, f"two nonlinear solves per parameter ({sens['finite_difference']['runs']})")
+    for field in ["velocity_field", "pressure_field"]:
+        for p in ["Yield Stress", "Rate Exponent"]:
+            e = s["fd_check"][field][p]
+            c.check(not e["one_sided"] and e["rel_diff"] < TOL,
+                    f"{field} d/d{p}: |DDM| {e['ddm']:.6g}, |FD| {e['fd']:.6g}, rel. difference {e['rel_diff']:.3e} < {TOL}")
+    with h5py.File(os.path.join(args.work, "channel", "solution.h5")) as h5:
+        names = set(h5["fields"])
+    want = {"du_dsigma0", "dp_dsigma0", "du_dn", "dp_dn"}
+    c.check(want <= names, f"solution.h5 has {sorted(want)}")
+    header = csv_header(os.path.join(args.work, "channel", "boundary_inlet.csv"))
+    want = ["du_t_dsigma0", "du_n_dsigma0", "dp_dsigma0", "du_t_dn", "du_n_dn", "dp_dn"]
+    c.check(all(w in header for w in want), f"boundary CSV columns {want}")
+
+
+def extrusion(args, c):
+    case = os.path.join(args.source, "xml", "extrusion.xml")
+    for nu in args.nu.split(","):
+        sets = [f"Boundary Conditions/{w}/Friction Coefficient={nu}" for w in ("container", "die_face", "die_land")]
+        sets += ["Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true"]
+        s = run(args.flowform, case, os.path.join(args.work, f"nu_{nu}"), sets)
+        for response in ["ram_force", "ram_pressure"]:
+            e = s["fd_check"][response]["Friction Coefficient"]
+            what = (f"ν = {nu}: d{response}/dν DDM {e['ddm']:.8g}, FD {e['fd']:.8g}, rel. difference "
+                    f"{e['rel_diff']:.3e}")
+            if e["one_sided"]:
+                c.check(len(e["changed_nodes"]) > 0, what + f" — one-sided, {len(e['changed_nodes'])} node(s) switch (excluded)")
+            else:
+                c.check(e["rel_diff"] < TOL, what + f" < {TOL}")
+        c.check(s["sensitivities"]["ram_force"]["Friction Coefficient"] > 0, f"ν = {nu}: the ram force grows with ν")
+
+
+def one_sided(args, c):
+    case = os.path.join(args.source, "xml", "extrusion.xml")
+    sets = [f"Boundary Conditions/{w}/Friction Coefficient=0.05" for w in ("container", "die_face", "die_land")]
+    sets += ["Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true",
+             "Sensitivity/Finite Difference Step=8e-4"]
+    s = run(args.flowform, case, os.path.join(args.work, "one_sided"), sets)
+    e = s["fd_check"]["ram_force"]["Friction Coefficient"]
+    c.check(e["one_sided"] and e["status"] == "one_sided", "the entry says one_sided")
+    changed = e["changed_nodes"]
+    c.check(any(n["wall"] == "container" and n["base"] == "slip" and n["plus"] == "stick" for n in changed),
+            f"it lists the container node that sticks at ν + δ: {changed}")
+    c.check(e.get("consistent_side") == "minus" and "rel_diff_one_sided" in e,
+            f"and the side where nothing changed (minus), with the backward difference "
+            f"{e['fd_backward']:.8g} vs DDM {e['ddm']:.8g}")
+    v = s["fd_check"]["velocity_field"]["Friction Coefficient"]
+    c.check(v["one_sided"], "the field entries are flagged too")
+
+
+def no_work(args, c):
+    case = os.path.join(args.source, "xml", "channel.xml")
+    base = run(args.flowform, case, os.path.join(args.work, "none"), [])
+    empty = run(args.flowform, case, os.path.join(args.work, "empty"), ["Sensitivity/Parameters={}"])
+    ddm = run(args.flowform, case, os.path.join(args.work, "ddm"),
+              ["Sensitivity/Parameters={Yield Stress, Rate Exponent, Rate Constant}"])
+    for name, s in [("no Sensitivity list", base), ("empty Parameters", empty)]:
+        sens = s["sensitivity"]
+        c.check(sens["factorizations"] == 0 and sens["solves"] == 0 and sens["finite_difference"]["runs"] == 0,
+                f"{name}: no sensitivity factorization, solve or FD run ({sens['factorizations']}, {sens['solves']}, "
+                f"{sens['finite_difference']['runs']})")
+        c.check(s["sensitivities"] == {} and s["fd_check"] == {} and s["timings"]["sensitivity"] == 0.0,
+                f"{name}: no sensitivities, no fd_check, no sensitivity time")
+        c.check(s["linear_solver"] == base["linear_solver"], f"{name}: the same linear-solver counts as without")
+        out = os.path.join(args.work, "none" if s is base else "empty")
+        with h5py.File(os.path.join(out, "solution.h5")) as h5:
+            extra = [n for n in h5["fields"] if n.startswith(("du_", "dp_"))]
+        header = csv_header(os.path.join(out, "boundary_inlet.csv"))
+        c.check(not extra and not any(h.startswith(("du_", "dp_")) for h in header),
+                f"{name}: no sensitivity fields or columns")
+    f = ddm["linear_solver"]["factorizations"] - base["linear_solver"]["factorizations"]
+    n = ddm["linear_solver"]["solves"] - base["linear_solver"]["solves"]
+    c.check(f == 1 and n == 3 and ddm["sensitivity"]["factorizations"] == 1 and ddm["sensitivity"]["solves"] == 3,
+            f"3 parameters cost 1 factorization and 3 back-substitutions more ({f}, {n})")
+    c.check(ddm["functionals"] == base["functionals"] and ddm["newton_iterations"] == base["newton_iterations"],
+            "the flow solve is the same with and without sensitivities")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("subcommand", choices=["channel", "extrusion", "one-sided", "no-work"])
+    parser.add_argument("flowform")
+    parser.add_argument("source")
+    parser.add_argument("work")
+    parser.add_argument("--nu", default="0.05,0.1,0.3")
+    parser.add_argument("--step", default="2e-4", help="channel: the FD step (a coarse one must fail the check)")
+    args = parser.parse_args()
+    os.makedirs(args.work, exist_ok=True)
+    c = Checker()
+    {"channel": channel, "extrusion": extrusion, "one-sided": one_sided, "no-work": no_work}[args.subcommand](args, c)
+    print("FAILED" if c.failed else "PASSED")
+    return 1 if c.failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
