@@ -320,7 +320,8 @@ void Simulation::updateWallScales(const Vector& x) {
     for (int k = 0; k < wall.numNodes(); ++k) {
       const LO n = m_dofMap->overlapIndex(wall.curve().nodes[k]);
       if (n < 0) continue;  // neither this rank's node nor a neighbour of one: not used here
-      wallMu[k] = mu[n];
+      const double fixed = wall.settings().penaltyViscosity;
+      wallMu[k] = fixed > 0.0 ? fixed : mu[n];
       wallSigma[k] = sigma[n];
     }
     wall.setScales(std::move(wallMu), std::move(wallSigma));

@@ -37,8 +37,14 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
   valid->set("Norton Regularization", 1e-6, "ε > 0 in (u_t² + ε²)^((q-1)/2) [velocity]");
   valid->set("Normal Penalty Factor", 1e3, "κ_n > 0: α_n = κ_n μ (× 2π r)");
   valid->set("Tangential Penalty Factor", 10.0,
-             "κ_t > 0: sticking stiffness α_t = κ_t μ (× 2π r); the ram force changes by < 1e-4 for "
-             "κ_t in [1, 100], and Newton needs more iterations as κ_t grows (docs/extrusion.md)");
+             "κ_t > 0: sticking stiffness α_t = κ_t μ (× 2π r); the extrusion's ram force changes by < 3e-4 "
+             "for κ_t in [1, 1000], and Newton needs more iterations as κ_t grows "
+             "(docs/extrusion_verification.md §4)");
+  valid->set("Penalty Viscosity", 0.0,
+             "μ in the penalties: 0 (default) = the largest adjacent cell viscosity, refreshed before every "
+             "flow solve; > 0 = this fixed value at every node, so the penalties do not depend on the "
+             "solution (docs/sensitivity.md: an external finite-difference check needs that)",
+             nonNegative);
   Teuchos::setStringToIntegralParameter<int>("Initial Status", "Active", "status of every wall node at the start",
                                              Teuchos::tuple<std::string>("Active", "Free"), valid.get());
   return valid;
@@ -72,6 +78,7 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   m_settings.nortonRegularization = positive("Norton Regularization");
   m_settings.normalPenalty = positive("Normal Penalty Factor");
   m_settings.tangentialPenalty = positive("Tangential Penalty Factor");
+  m_settings.penaltyViscosity = list.get<double>("Penalty Viscosity");
   m_settings.initiallyActive = list.get<std::string>("Initial Status") == "Active";
 
   // InputError for a missing group, a zero-length segment, a branched group.

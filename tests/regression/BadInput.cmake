@@ -139,6 +139,9 @@ flowform_exit_test(bad_input_contact_wall_missing_group CASE contact_small.xml
 flowform_exit_test(bad_input_friction_coefficient_negative CASE contact_small.xml
   SET "Boundary Conditions/top/Friction Coefficient=-0.1"
   CONTAINS "Friction Coefficient" "top")
+flowform_exit_test(bad_input_penalty_viscosity_negative CASE contact_small.xml
+  SET "Boundary Conditions/top/Penalty Viscosity=-1.0"
+  CONTAINS "Penalty Viscosity" "top")
 flowform_exit_test(bad_input_contact_wall_zero_length_segment CASE contact_small.xml
   SET "Mesh/File=../../data/unit_square_zero_segment.msh"
   CONTAINS "top" "zero-length segment" "unit_square_zero_segment.msh")

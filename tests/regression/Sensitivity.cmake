@@ -1,9 +1,11 @@
 # Sensitivity analysis (SPEC §4): DDM against the built-in finite-difference check on the
 # channel (du/dσ0, du/dn) and the extrusion (dF/dν at several ν), the one-sided flag at a
-# stick/slip switch, and what a run without sensitivities costs. Each test is one subcommand
+# stick/slip switch, and what a run without sensitivities costs. `external`: dF/dν against a
+# central difference of two independent full runs, with the walls' Penalty Viscosity fixed
+# (the adaptive penalty scales depend on the solution, which the DDM holds fixed). Each test is one subcommand
 # of regression/sensitivity_checks.py (tolerances justified there and in docs/sensitivity.md).
 set(FLOWFORM_PYTHON /usr/bin/python3)  # Debian's, with h5py
-foreach(sub channel extrusion one-sided no-work)
+foreach(sub channel extrusion external one-sided no-work)
   add_test(NAME sensitivity_${sub}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/sensitivity_checks.py ${sub}
                    $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/sensitivity/${sub})

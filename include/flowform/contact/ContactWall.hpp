@@ -65,6 +65,7 @@ struct ContactWallSettings {
   double nortonRegularization = 1e-6;
   double normalPenalty = 1e3;        ///< κ_n
   double tangentialPenalty = 10.0;   ///< κ_t
+  double penaltyViscosity = 0.0;     ///< fixed μ of the penalties; 0: the local cell viscosity
   bool initiallyActive = true;
 };
 
