@@ -52,6 +52,7 @@ FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, con
     if (sensitivity.responseDerivatives().count(response)) m_names.push_back(response);
   m_names.push_back("velocity_field");
   m_names.push_back("pressure_field");
+  m_ddm = sensitivity.responseDerivatives();
   m_differences = Teuchos::rcp(new MultiVector(base.x->getMap(), parameters.size()));
   for (size_t j = 0; j < parameters.size(); ++j) {
     const SensitivityParameter& h = parameters[j];
@@ -154,9 +155,14 @@ void FiniteDifferenceCheck::report(nlohmann::json& summary) const {
       check[response][pr.name] = entry;
     }
     if (!pr.converged)
-      for (const std::string& response : m_names)
+      for (const std::string& response : m_names) {
+        // The DDM value stands on its own; only the difference is missing.
+        const auto byResponse = m_ddm.find(response);
+        nlohmann::json ddmValue = nullptr;
+        if (byResponse != m_ddm.end() && byResponse->second.count(pr.name)) ddmValue = byResponse->second.at(pr.name);
         check[response][pr.name] = {{"status", "not_converged"}, {"message", pr.message}, {"one_sided", false},
-                                    {"ddm", nullptr}, {"fd", nullptr}, {"rel_diff", nullptr}};
+                                    {"ddm", ddmValue}, {"fd", nullptr}, {"rel_diff", nullptr}};
+      }
   }
   summary["sensitivity"]["finite_difference"] = {{"runs", m_runs}, {"newton_iterations", m_newtonIterations},
                                                  {"all_converged", m_allConverged}, {"parameters", runs}};

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include <Amesos2.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultSerialComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
@@ -66,8 +67,22 @@ void LinearSolver::factor(const Teuchos::RCP<const CrsMatrix>& A) {
   CrsMatrix rootMatrix(d.rootMap, 0);
   rootMatrix.doImport(*A, *d.toRoot, Tpetra::INSERT);
   rootMatrix.fillComplete(d.rootMap, d.rootMap);
-  if (comm->getRank() != 0) return;
+  // Rank 0 factors; every rank must learn whether that worked, or the others would go on
+  // into the next collective call while rank 0 unwinds (a hang).
+  std::string failure;
+  if (comm->getRank() == 0) {
+    try {
+      factorOnRoot(d, rootMatrix);
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+  }
+  int failed = failure.empty() ? 0 : 1;
+  Teuchos::broadcast(*comm, 0, &failed);
+  if (failed) throw std::runtime_error(comm->getRank() == 0 ? failure : "KLU2 numeric factorization failed on rank 0");
+}
 
+void LinearSolver::factorOnRoot(Impl& d, const CrsMatrix& rootMatrix) {
   // Same local CSR, maps on a serial communicator (a shallow copy of the arrays).
   const auto rootCols = rootMatrix.getColMap();
   std::vector<GO> colGids(rootCols->getNodeNumElements());

@@ -60,6 +60,15 @@ Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<C
     if (name.empty()) continue;
     if (!seen.insert(name).second) throw InputError("Sensitivity/Parameters: '" + name + "' is given twice");
     m_parameters.push_back(parseSensitivityParameter(name, walls));
+    // The Tresca bound m σ̄_k/√3 uses σ̄_k held from the start of the solve (ContactWall::
+    // setScales), so its dependence on the material parameters (and on q) is not in ∂R/∂h
+    // or K_t: refuse rather than report a derivative that misses a full-size term.
+    if (!m_parameters.back().isFriction())
+      for (const ContactWall& wall : walls)
+        if (wall.usesShearFactor())
+          throw InputError("Sensitivity/Parameters: '" + name + "' is not available while wall '" + wall.name() +
+                           "' uses Tresca or Orowan friction (its bound m σ̄/√3 holds σ̄ fixed; docs/sensitivity.md); "
+                           "its friction parameters are");
   }
   m_check = list->get<bool>("Finite Difference Check");
   m_step = list->get<double>("Finite Difference Step");
@@ -131,7 +140,10 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
       log() << "sensitivity:   d" << name << "/dh = " << value << "\n";
     }
   }
-  if (!m_finite) log() << "sensitivity: dq/dh is not finite (singular Jacobian?)\n";
+  if (!m_finite) {
+    log() << "sensitivity: dq/dh is not finite (singular Jacobian?)\n";
+    m_dqdh = Teuchos::null;  // computed() is false: no NaN fields are written
+  }
 }
 
 void Sensitivity::report(nlohmann::json& summary) const {

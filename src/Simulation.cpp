@@ -290,6 +290,7 @@ PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double de
   const std::vector<ContactWall> saved = m_walls;
   FlowPhysics physics = m_physics;
   shiftParameter(h, delta, physics, m_walls);
+  for (ContactWall& wall : m_walls) wall.resetChangeCounts();
   // Held scales (the default) keep the walls' μ_k and σ̄_k of the base run, the problem the
   // DDM differentiates; Recomputed takes them from the start state at h ± δ, as a solve does.
   NonlinearSolver solver(*m_model, m_params.sublist("Solver"));

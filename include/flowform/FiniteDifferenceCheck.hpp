@@ -93,6 +93,7 @@ class FiniteDifferenceCheck {
   Teuchos::RCP<MultiVector> m_differences;
   std::vector<std::string> m_names;  ///< the checked responses and the two fields
   std::map<std::string, std::map<std::string, Entry>> m_entries;  ///< response → parameter → entry
+  std::map<std::string, std::map<std::string, double>> m_ddm;     ///< response → parameter → DDM value
   bool m_allConverged = true;
   int m_runs = 0, m_newtonIterations = 0;
 };

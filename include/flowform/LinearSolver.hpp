@@ -36,6 +36,8 @@ class LinearSolver {
 
  private:
   struct Impl;
+  /// Rank 0's part of a gathered factorization: the serial KLU2 on the gathered rows.
+  static void factorOnRoot(Impl& d, const CrsMatrix& rootMatrix);
   std::unique_ptr<Impl> m_impl;
   int m_numFactorizations = 0;
   int m_numSolves = 0;

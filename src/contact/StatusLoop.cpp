@@ -61,8 +61,12 @@ std::vector<std::vector<WallNodeState>> ContactStatusLoop::states(const std::vec
   for (size_t w = 0; w < walls.size(); ++w) {
     wallValues(walls[w], x, p, u);
     const bool usesPressure = walls[w].usesFrictionCoefficient();
-    for (int k = 0; k < walls[w].numNodes(); ++k)
-      all[w].push_back({b[w][k], usesPressure ? p[k] > 0.0 : true});
+    // The pressure sign matters only where friction acts (P_k > 0 decides "no friction");
+    // at a free node p ≈ 0 and its sign is noise, not a state.
+    for (int k = 0; k < walls[w].numNodes(); ++k) {
+      const bool free = b[w][k] == FrictionBranch::Free;
+      all[w].push_back({b[w][k], free || !usesPressure ? true : p[k] > 0.0});
+    }
   }
   return all;
 }

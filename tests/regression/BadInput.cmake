@@ -142,6 +142,10 @@ flowform_exit_test(bad_input_friction_coefficient_negative CASE contact_small.xm
 flowform_exit_test(bad_input_penalty_viscosity_negative CASE contact_small.xml
   SET "Boundary Conditions/top/Penalty Viscosity=-1.0"
   CONTAINS "Penalty Viscosity" "top")
+flowform_exit_test(bad_input_material_sensitivity_with_tresca CASE contact_small.xml
+  SET "Boundary Conditions/top/Friction Law=Tresca" "Boundary Conditions/top/Shear Factor=0.5"
+      "Sensitivity/Parameters={Yield Stress}"
+  CONTAINS "Yield Stress" "Tresca" "top")
 flowform_exit_test(bad_input_contact_wall_zero_length_segment CASE contact_small.xml
   SET "Mesh/File=../../data/unit_square_zero_segment.msh"
   CONTAINS "top" "zero-length segment" "unit_square_zero_segment.msh")

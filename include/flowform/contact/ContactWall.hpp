@@ -98,6 +98,9 @@ class ContactWall {
     ++m_changes[k];
   }
   int changes(int k) const { return m_changes[k]; }
+  /// Forgets the change counts (a new solve from this state, e.g. a finite-difference run,
+  /// gets its own Max Changes Per Node).
+  void resetChangeCounts() { m_changes.assign(m_changes.size(), 0); }
   const std::array<double, 2>& nodeCoordinates(int k) const { return m_coords[k]; }
   /// Wall neighbours of node k (−1 where the wall ends).
   int previous(int k) const { return k > 0 ? k - 1 : (m_curve.closed ? numNodes() - 1 : -1); }
