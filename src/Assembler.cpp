@@ -4,6 +4,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Assembly_Helpers.hpp>
 
+#include "flowform/EvaluationTypes.hpp"
 #include "flowform/SensitivityParameter.hpp"
 #include "flowform/kernels/ShapeFunctions.hpp"
 
@@ -12,7 +13,6 @@ namespace flowform {
 namespace {
 
 /// The "ParamDeriv"/tangent evaluation type: one directional derivative.
-using TangentFad = Sacado::Fad::SFad<double, 1>;
 
 /// Integration order of the flow kernel: P1 in plane strain has constant integrands (one
 /// point is exact); the axisymmetric terms (u_r/r, 2πr) and Q1 need the 3-point / 2×2 rules.

@@ -8,6 +8,7 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/BoundaryCurve.hpp"
+#include "flowform/EvaluationTypes.hpp"
 #include "flowform/InputError.hpp"
 #include "flowform/SensitivityParameter.hpp"
 #include "flowform/kernels/FlowResidual.hpp"
@@ -54,7 +55,6 @@ Responses::Responses(const Teuchos::ParameterList& list, const Mesh& mesh) {
 
 namespace {
 
-using TangentFad = Sacado::Fad::SFad<double, 1>;
 
 double sumOverRanks(const Comm& comm, double local) {
   double global = 0.0;

@@ -57,12 +57,6 @@ class Responses {
     for (const Response& r : m_responses) n.push_back(r.name);
     return n;
   }
-  /// Whether the response has a derivative (all but Dead Zone).
-  bool isDifferentiable(const std::string& name) const {
-    for (const Response& r : m_responses)
-      if (r.name == name) return r.type != "Dead Zone";
-    return false;
-  }
 
  private:
   /// Values (Scalar double), or values and derivatives along (dx, h) (an AD Scalar).
