@@ -30,6 +30,7 @@
 #include "flowform/FlowModel.hpp"
 #include "flowform/Log.hpp"
 #include "flowform/Simulation.hpp"
+#include "StructuredMesh.hpp"
 
 namespace {
 
@@ -76,42 +77,14 @@ bool meshIsValid(const Mesh& mesh) {
 /// diagonals. Boundary groups bottom, right, top, left.
 Mesh makeMesh(CellType type, int nx, int ny, double x0, double y0, double Lx, double Ly, double distortion,
               double slope = 0.0) {
-  Mesh mesh;
-  mesh.source = "AssemblyTest mesh";
-  mesh.cellType = type;
-  auto id = [&](int i, int j) { return static_cast<GO>(j * (nx + 1) + i); };
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i) {
-      double xi = double(i) / nx, eta = double(j) / ny;
-      if (i > 0 && i < nx && j > 0 && j < ny) {
-        xi += distortion / nx * hash(i, j, 0.1);
-        eta += distortion / ny * hash(i, j, 0.7);
-      }
-      mesh.coords.push_back({x0 + xi * Lx, y0 + eta * Ly * (1.0 + slope * xi)});
+  Mesh mesh = test::structuredMesh(type, nx, ny, "AssemblyTest mesh", [&](int i, int j) {
+    double xi = double(i) / nx, eta = double(j) / ny;
+    if (i > 0 && i < nx && j > 0 && j < ny) {
+      xi += distortion / nx * hash(i, j, 0.1);
+      eta += distortion / ny * hash(i, j, 0.7);
     }
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const GO a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if (type == CellType::Quadrilateral4)
-        mesh.cellNodes.insert(mesh.cellNodes.end(), {a, b, c, d});
-      else if ((i + j) % 2 == 0)
-        mesh.cellNodes.insert(mesh.cellNodes.end(), {a, b, c, a, c, d});
-      else
-        mesh.cellNodes.insert(mesh.cellNodes.end(), {a, b, d, b, c, d});
-    }
-  BoundaryGroup bottom{"bottom", {}}, right{"right", {}}, top{"top", {}}, left{"left", {}};
-  for (int i = 0; i < nx; ++i) {
-    bottom.edges.push_back({id(i, 0), id(i + 1, 0)});
-    top.edges.push_back({id(i + 1, ny), id(i, ny)});
-  }
-  for (int j = 0; j < ny; ++j) {
-    right.edges.push_back({id(nx, j), id(nx, j + 1)});
-    left.edges.push_back({id(0, j + 1), id(0, j)});
-  }
-  mesh.boundaries = {bottom, right, top, left};
-  RegionGroup body{"body", {}};
-  for (GO c = 0; c < mesh.numCells(); ++c) body.cells.push_back(c);
-  mesh.regions = {body};
+    return std::array<double, 2>{x0 + xi * Lx, y0 + eta * Ly * (1.0 + slope * xi)};
+  });
   if (!meshIsValid(mesh)) throw std::logic_error("AssemblyTest: the generated mesh has an inverted cell");
   return mesh;
 }

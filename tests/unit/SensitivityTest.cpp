@@ -21,6 +21,7 @@
 #include "flowform/SensitivityParameter.hpp"
 #include "flowform/Simulation.hpp"
 #include "flowform/contact/StatusLoop.hpp"
+#include "StructuredMesh.hpp"
 
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
@@ -33,43 +34,14 @@ using Teuchos::RCP;
 /// A structured nx × ny mesh of [x0, x0 + 1] × [0, 1], interior nodes moved by up to a
 /// fifth of a cell; triangles on alternating diagonals. Groups bottom, right, top, left.
 Mesh makeMesh(CellType type, int nx, int ny, double x0) {
-  Mesh mesh;
-  mesh.source = "SensitivityTest mesh";
-  mesh.cellType = type;
-  auto id = [&](int i, int j) { return static_cast<GO>(j * (nx + 1) + i); };
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i) {
-      double xi = double(i) / nx, eta = double(j) / ny;
-      if (i > 0 && i < nx && j > 0 && j < ny) {
-        xi += 0.2 / nx * std::sin(7.1 * i + 3.3 * j);
-        eta += 0.2 / ny * std::cos(5.3 * i - 2.9 * j);
-      }
-      mesh.coords.push_back({x0 + xi, eta});
+  return test::structuredMesh(type, nx, ny, "SensitivityTest mesh", [&](int i, int j) {
+    double xi = double(i) / nx, eta = double(j) / ny;
+    if (i > 0 && i < nx && j > 0 && j < ny) {
+      xi += 0.2 / nx * std::sin(7.1 * i + 3.3 * j);
+      eta += 0.2 / ny * std::cos(5.3 * i - 2.9 * j);
     }
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const GO a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if (type == CellType::Quadrilateral4)
-        mesh.cellNodes.insert(mesh.cellNodes.end(), {a, b, c, d});
-      else if ((i + j) % 2 == 0)
-        mesh.cellNodes.insert(mesh.cellNodes.end(), {a, b, c, a, c, d});
-      else
-        mesh.cellNodes.insert(mesh.cellNodes.end(), {a, b, d, b, c, d});
-    }
-  BoundaryGroup bottom{"bottom", {}}, right{"right", {}}, top{"top", {}}, left{"left", {}};
-  for (int i = 0; i < nx; ++i) {
-    bottom.edges.push_back({id(i, 0), id(i + 1, 0)});
-    top.edges.push_back({id(i + 1, ny), id(i, ny)});
-  }
-  for (int j = 0; j < ny; ++j) {
-    right.edges.push_back({id(nx, j), id(nx, j + 1)});
-    left.edges.push_back({id(0, j + 1), id(0, j)});
-  }
-  mesh.boundaries = {bottom, right, top, left};
-  RegionGroup body{"body", {}};
-  for (GO c = 0; c < mesh.numCells(); ++c) body.cells.push_back(c);
-  mesh.regions = {body};
-  return mesh;
+    return std::array<double, 2>{x0 + xi, eta};
+  });
 }
 
 /// Inflow u = (1, 0) on the left; the bottom a Coulomb wall (ν = 0.3), the top an Orowan
