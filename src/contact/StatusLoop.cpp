@@ -5,7 +5,8 @@
 namespace flowform {
 
 std::string WallNodeState::name() const {
-  return std::string(frictionBranchName(branch)) + (branch != FrictionBranch::Free && !compressed ? " (p <= 0)" : "");
+  return std::string(frictionBranchName(branch)) + (branch != FrictionBranch::Free && !compressed ? " (p <= 0)" : "") +
+         (slipSign > 0 ? " (u_t > 0)" : slipSign < 0 ? " (u_t < 0)" : "");
 }
 
 ContactStatusLoop::ContactStatusLoop(const Teuchos::ParameterList& contact, const Mesh& mesh, const DofMap& dofMap)
@@ -63,9 +64,14 @@ std::vector<std::vector<WallNodeState>> ContactStatusLoop::states(const std::vec
     const bool usesPressure = walls[w].usesFrictionCoefficient();
     // The pressure sign matters only where friction acts (P_k > 0 decides "no friction");
     // at a free node p ≈ 0 and its sign is noise, not a state.
+    const bool coulombLike = usesPressure || walls[w].usesShearFactor();  // not Norton (smooth) or None
     for (int k = 0; k < walls[w].numNodes(); ++k) {
       const bool free = b[w][k] == FrictionBranch::Free;
-      all[w].push_back({b[w][k], free || !usesPressure ? true : p[k] > 0.0});
+      const bool slips = b[w][k] == FrictionBranch::Slip || b[w][k] == FrictionBranch::SlipTresca;
+      const auto& n = walls[w].curve().normals[k];
+      const double ut = -n[1] * u[k][0] + n[0] * u[k][1];  // u·t, t = (−n_y, n_x), as the law takes it
+      const int sign = coulombLike && slips ? (ut >= 0.0 ? 1 : -1) : 0;
+      all[w].push_back({b[w][k], free || !usesPressure ? true : p[k] > 0.0, sign});
     }
   }
   return all;

@@ -23,7 +23,13 @@ namespace flowform {
 struct WallNodeState {
   FrictionBranch branch = FrictionBranch::Free;
   bool compressed = false;
-  bool operator==(const WallNodeState& o) const { return branch == o.branch && compressed == o.compressed; }
+  /// sign(u_t) of a node slipping under Coulomb/Tresca/Orowan friction (0 otherwise): the
+  /// force f̂ sign(u_t) and ∂g/∂ν = P_k sign(u_t) jump where it flips, also at ν = 0 where the
+  /// stick range is empty and no branch changes.
+  int slipSign = 0;
+  bool operator==(const WallNodeState& o) const {
+    return branch == o.branch && compressed == o.compressed && slipSign == o.slipSign;
+  }
   bool operator!=(const WallNodeState& o) const { return !(*this == o); }
   /// e.g. "stick", "slip (p <= 0)".
   std::string name() const;
