@@ -49,6 +49,16 @@ MATERIALS = {
 TIME = "/usr/bin/time"
 
 
+def require_tools(flowform, script):
+    """The absolute path of the flowform binary; exits with a message when it or GNU time is missing."""
+    flowform = os.path.abspath(flowform)
+    if not os.access(flowform, os.X_OK):
+        sys.exit(f"{script}: no executable flowform at {flowform} (give its path)")
+    if not os.access(TIME, os.X_OK):
+        sys.exit(f"{script}: {TIME} not found: apt-get install time")
+    return flowform
+
+
 def channel_dofs(n):
     return 3 * (n + 1) * (2 * n + 1)
 
@@ -281,11 +291,7 @@ def main():
     p.add_argument("--keep", action="store_true", help="keep the output directories")
     args = p.parse_args()
 
-    flowform = os.path.abspath(args.flowform)
-    if not os.access(flowform, os.X_OK):
-        sys.exit(f"channel_bench.py: no executable flowform at {flowform} (give its path)")
-    if not os.access(TIME, os.X_OK):
-        sys.exit(f"channel_bench.py: {TIME} not found: apt-get install time")
+    flowform = require_tools(args.flowform, "channel_bench.py")
     sizes = ([int(s) for s in args.sizes.split(",")] if args.sizes
              else QUICK_SIZES if args.quick else DEFAULT_SIZES)
     elements = [e.strip() for e in args.elements.split(",") if e.strip()]

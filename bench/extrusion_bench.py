@@ -55,7 +55,7 @@ import time
 
 import numpy as np
 
-from channel_bench import REPO, TIME, machine_info, parse_time_v
+from channel_bench import REPO, TIME, machine_info, parse_time_v, require_tools
 
 sys.path.insert(0, os.path.join(REPO, "tests", "regression"))
 from extrusion_checks import lit, observed_order, richardson  # noqa: E402
@@ -406,11 +406,7 @@ def main():
             print_case(case, entry)
         return 0
 
-    flowform = os.path.abspath(args.flowform)
-    if not os.access(flowform, os.X_OK):
-        sys.exit(f"extrusion_bench.py: no executable flowform at {flowform} (give its path)")
-    if not os.access(TIME, os.X_OK):
-        sys.exit(f"extrusion_bench.py: {TIME} not found: apt-get install time")
+    flowform = require_tools(args.flowform, "extrusion_bench.py")
     cases = [c.strip() for c in args.cases.split(",") if c.strip()]
     for c in cases:
         if c not in CASES:

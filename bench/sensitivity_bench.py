@@ -48,7 +48,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from channel_bench import ELEMENTS, REPO, TIME, channel_dofs, machine_info, run_case  # noqa: E402
+from channel_bench import ELEMENTS, REPO, channel_dofs, machine_info, require_tools, run_case  # noqa: E402
 
 PARAMETERS = ["Yield Stress", "Rate Exponent", "Rate Constant"]
 DEFAULT_SIZES = [40, 81, 163, 230]  # 9 963, 40 098, 160 884, 319 473 dofs; 408: 1 002 459
@@ -270,11 +270,7 @@ def main():
         print_tables([analyse(s) for s in data["sizes"]], data["machine"])
         return 0
 
-    flowform = os.path.abspath(args.flowform)
-    if not os.access(flowform, os.X_OK):
-        sys.exit(f"sensitivity_bench.py: no executable flowform at {flowform}")
-    if not os.access(TIME, os.X_OK):
-        sys.exit(f"sensitivity_bench.py: {TIME} not found: apt-get install time")
+    flowform = require_tools(args.flowform, "sensitivity_bench.py")
     os.makedirs(args.out, exist_ok=True)
     info = machine_info()
     info["flowform"] = flowform
