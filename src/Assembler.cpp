@@ -12,8 +12,6 @@ namespace flowform {
 
 namespace {
 
-/// The "ParamDeriv"/tangent evaluation type: one directional derivative.
-
 /// Integration order of the flow kernel: P1 in plane strain has constant integrands (one
 /// point is exact); the axisymmetric terms (u_r/r, 2πr) and Q1 need the 3-point / 2×2 rules.
 int integrationOrder(CellType type, Geometry geometry) {
@@ -234,21 +232,8 @@ void Assembler::tangent(const Vector& xOwned, const Vector* dxOwned, const Sensi
   addCellResiduals<TangentFad>(xOverlap, dxOverlap, h, *m_fOverlap, applyConstraints);
   // The tractions depend on neither x nor h.
   if (m_walls) addContactResidual<TangentFad>(xOverlap, dxOverlap, h, *m_fOverlap, applyConstraints);
-  if (applyConstraints && dxOverlap) {
-    // The constraint rows a·u − b are linear in u and independent of h: their derivative is a·du.
-    auto dx = dxOverlap->getLocalViewHost(Tpetra::Access::ReadOnly);
-    auto f = m_fOverlap->getLocalViewHost(Tpetra::Access::ReadWrite);
-    for (LO n = 0; n < m_dofMap.numOwnedNodes(); ++n) {
-      const NodeConstraint& nc = m_bcs.constraints()[n];
-      const LO ux = kDofsPerNode * n + kUx, uy = kDofsPerNode * n + kUy;
-      if (nc.kind == NodeConstraint::Kind::Full) {
-        f(ux, 0) += dx(ux, 0);
-        f(uy, 0) += dx(uy, 0);
-      } else if (nc.kind == NodeConstraint::Kind::Single) {
-        f(kDofsPerNode * n + nc.constrainedRow, 0) += nc.a[0] * dx(ux, 0) + nc.a[1] * dx(uy, 0);
-      }
-    }
-  }
+  // The constraint rows a·u − b are linear in u and independent of h: their derivative is a·du.
+  if (applyConstraints && dxOverlap) addConstraintRows(*dxOverlap, nullptr, m_fOverlap.get(), false);
   dfOwned.putScalar(0.0);
   dfOwned.doExport(*m_fOverlap, *m_dofMap.exporter(), Tpetra::ADD);
 }
@@ -318,8 +303,11 @@ void Assembler::assembleJacobianCells(const Vector& xOverlap, FECrsMatrix& jacob
   }
 }
 
-void Assembler::addConstraintRows(const Vector& xOverlap, FECrsMatrix* jacobian, Vector* fOverlap) const {
+void Assembler::addConstraintRows(const Vector& xOverlap, FECrsMatrix* jacobian, Vector* fOverlap,
+                                  bool withOffsets) const {
   // Only owned nodes (overlap indices 0..numOwnedNodes-1): each constraint row is added once.
+  // Without the offsets (v, b) the rows are their own derivative along xOverlap = du.
+  const double offset = withOffsets ? 1.0 : 0.0;
   auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   decltype(m_fOverlap->getLocalViewHost(Tpetra::Access::ReadWrite)) f;
   if (fOverlap) f = fOverlap->getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -331,8 +319,8 @@ void Assembler::addConstraintRows(const Vector& xOverlap, FECrsMatrix* jacobian,
     if (nc.kind == NodeConstraint::Kind::Full) {
       // rows: u_x − v_x, u_y − v_y
       if (fOverlap) {
-        f(ux, 0) += x(ux, 0) - nc.value[0];
-        f(uy, 0) += x(uy, 0) - nc.value[1];
+        f(ux, 0) += x(ux, 0) - offset * nc.value[0];
+        f(uy, 0) += x(uy, 0) - offset * nc.value[1];
       }
       if (jacobian) {
         const double one = 1.0;
@@ -342,7 +330,7 @@ void Assembler::addConstraintRows(const Vector& xOverlap, FECrsMatrix* jacobian,
     } else if (nc.kind == NodeConstraint::Kind::Single) {
       // row c: a·u − b
       const LO row = kDofsPerNode * n + nc.constrainedRow;
-      if (fOverlap) f(row, 0) += nc.a[0] * x(ux, 0) + nc.a[1] * x(uy, 0) - nc.b;
+      if (fOverlap) f(row, 0) += nc.a[0] * x(ux, 0) + nc.a[1] * x(uy, 0) - offset * nc.b;
       if (jacobian) jacobian->sumIntoLocalValues(row, 2, nc.a, cols);
     }
   }

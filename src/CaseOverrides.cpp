@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "flowform/InputError.hpp"
+#include "flowform/Strings.hpp"
 
 namespace flowform {
 
@@ -32,10 +33,6 @@ bool parseBool(const std::string& text, bool& value) {
 
 /// "{a, b, c}" or "a, b, c" (braces optional) as an array of trimmed strings; "{}" is empty.
 Teuchos::Array<std::string> parseStringArray(std::string text) {
-  auto trim = [](const std::string& t) {
-    const size_t a = t.find_first_not_of(" \t"), b = t.find_last_not_of(" \t");
-    return a == std::string::npos ? std::string() : t.substr(a, b - a + 1);
-  };
   text = trim(text);
   if (text.size() >= 2 && text.front() == '{' && text.back() == '}') text = text.substr(1, text.size() - 2);
   Teuchos::Array<std::string> items;

@@ -55,7 +55,6 @@ Responses::Responses(const Teuchos::ParameterList& list, const Mesh& mesh) {
 
 namespace {
 
-
 double sumOverRanks(const Comm& comm, double local) {
   double global = 0.0;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
@@ -129,8 +128,8 @@ void cellIntegrals(const DofReader<Scalar>& x, const Mesh& mesh, const DofMap& d
     }
     double ux = 0.0, uy = 0.0;
     for (int a = 0; a < npc; ++a) {
-      ux += centroid.N[0][a] * output<double>(x.x(kDofsPerNode * nodes[a] + kUx, 0));
-      uy += centroid.N[0][a] * output<double>(x.x(kDofsPerNode * nodes[a] + kUy, 0));
+      ux += centroid.N[0][a] * x.x(kDofsPerNode * nodes[a] + kUx, 0);  // values only
+      uy += centroid.N[0][a] * x.x(kDofsPerNode * nodes[a] + kUy, 0);
     }
     if (std::hypot(ux, uy) < deadSpeed) {
       for (int q = 0; q < rule.numPoints; ++q) deadArea += measureWeight(rule, q, geometry);

@@ -9,6 +9,7 @@
 
 #include "flowform/InputError.hpp"
 #include "flowform/Log.hpp"
+#include "flowform/Strings.hpp"
 
 namespace flowform {
 
@@ -16,12 +17,6 @@ namespace {
 
 /// fd_check's entries for the solution fields (beside the responses).
 const char* const kFieldEntries[] = {"velocity_field", "pressure_field"};
-
-std::string trim(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t\n");
-  const size_t b = s.find_last_not_of(" \t\n");
-  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-}
 
 }  // namespace
 

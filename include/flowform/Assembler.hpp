@@ -66,7 +66,10 @@ class Assembler {
  private:
   template <int NumNodes>
   void assembleJacobianCells(const Vector& xOverlap, FECrsMatrix& jacobian, Vector* fOverlap) const;
-  void addConstraintRows(const Vector& xOverlap, FECrsMatrix* jacobian, Vector* fOverlap) const;
+  /// The constraint rows (a·u − b, or u − v) at x; `withOffsets` false drops b and v, which
+  /// gives the rows' derivative a·du when xOverlap is a direction du.
+  void addConstraintRows(const Vector& xOverlap, FECrsMatrix* jacobian, Vector* fOverlap,
+                         bool withOffsets = true) const;
   void addTractions(Vector& fOverlap, bool applyConstraints = true) const;
   template <typename Scalar>
   void gatherWallNode(const Vector& xOverlap, int ref, Scalar* u, Scalar* p) const;

@@ -35,6 +35,22 @@ void ContactStatusLoop::wallValues(const ContactWall& wall, const Vector& x, std
   }
 }
 
+namespace {
+
+/// The friction law's branch at every node of `wall`, from its replicated p and u.
+std::vector<FrictionBranch> wallBranches(const ContactWall& wall, const std::vector<double>& p,
+                                         const std::vector<std::array<double, 2>>& u) {
+  std::vector<FrictionBranch> b(wall.numNodes());
+  for (int k = 0; k < wall.numNodes(); ++k) {
+    auto pressure = [&](int j) { return j < 0 ? 0.0 : p[j]; };
+    const double pk[3] = {pressure(wall.previous(k)), p[k], pressure(wall.next(k))};
+    wall.tangentialForce(k, wall.frictionParameters(), u[k].data(), pk, &b[k]);
+  }
+  return b;
+}
+
+}  // namespace
+
 std::vector<std::vector<FrictionBranch>> ContactStatusLoop::branches(const std::vector<ContactWall>& walls,
                                                                      const Vector& x) const {
   std::vector<std::vector<FrictionBranch>> all;
@@ -42,36 +58,30 @@ std::vector<std::vector<FrictionBranch>> ContactStatusLoop::branches(const std::
   std::vector<std::array<double, 2>> u;
   for (const ContactWall& wall : walls) {
     wallValues(wall, x, p, u);
-    std::vector<FrictionBranch> b(wall.numNodes());
-    for (int k = 0; k < wall.numNodes(); ++k) {
-      auto pressure = [&](int j) { return j < 0 ? 0.0 : p[j]; };
-      const double pk[3] = {pressure(wall.previous(k)), p[k], pressure(wall.next(k))};
-      wall.tangentialForce(k, wall.frictionParameters(), u[k].data(), pk, &b[k]);
-    }
-    all.push_back(std::move(b));
+    all.push_back(wallBranches(wall, p, u));
   }
   return all;
 }
 
 std::vector<std::vector<WallNodeState>> ContactStatusLoop::states(const std::vector<ContactWall>& walls,
                                                                    const Vector& x) const {
-  const auto b = branches(walls, x);
   std::vector<std::vector<WallNodeState>> all(walls.size());
   std::vector<double> p;
   std::vector<std::array<double, 2>> u;
   for (size_t w = 0; w < walls.size(); ++w) {
-    wallValues(walls[w], x, p, u);
+    wallValues(walls[w], x, p, u);  // one collective Import per wall, for branches and states alike
+    const std::vector<FrictionBranch> b = wallBranches(walls[w], p, u);
     const bool usesPressure = walls[w].usesFrictionCoefficient();
     // The pressure sign matters only where friction acts (P_k > 0 decides "no friction");
     // at a free node p ≈ 0 and its sign is noise, not a state.
     const bool coulombLike = usesPressure || walls[w].usesShearFactor();  // not Norton (smooth) or None
     for (int k = 0; k < walls[w].numNodes(); ++k) {
-      const bool free = b[w][k] == FrictionBranch::Free;
-      const bool slips = b[w][k] == FrictionBranch::Slip || b[w][k] == FrictionBranch::SlipTresca;
+      const bool free = b[k] == FrictionBranch::Free;
+      const bool slips = b[k] == FrictionBranch::Slip || b[k] == FrictionBranch::SlipTresca;
       const auto& n = walls[w].curve().normals[k];
       const double ut = -n[1] * u[k][0] + n[0] * u[k][1];  // u·t, t = (−n_y, n_x), as the law takes it
       const int sign = coulombLike && slips ? (ut >= 0.0 ? 1 : -1) : 0;
-      all[w].push_back({b[w][k], free || !usesPressure ? true : p[k] > 0.0, sign});
+      all[w].push_back({b[k], free || !usesPressure ? true : p[k] > 0.0, sign});
     }
   }
   return all;
