@@ -2,8 +2,8 @@
 
 namespace flowform {
 
-FlowModel::FlowModel(Assembler& assembler)
-    : m_assembler(assembler), m_jacobian(assembler.createJacobian()) {}
+FlowModel::FlowModel(Assembler& assembler, LinearSolver::Ordering ordering)
+    : m_assembler(assembler), m_jacobian(assembler.createJacobian()), m_linearSolver(ordering) {}
 
 void FlowModel::residual(const Vector& x, Vector& f) {
   ++m_numResiduals;

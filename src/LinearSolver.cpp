@@ -7,14 +7,17 @@
 #include <Teuchos_DefaultSerialComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
+#include "flowform/KluNestedDissection.hpp"
+
 namespace flowform {
 
 using Amesos2Solver = Amesos2::Solver<CrsMatrix, MultiVector>;
 
 struct LinearSolver::Impl {
-  // Serial path.
-  Teuchos::RCP<const CrsMatrix> matrix;
-  Teuchos::RCP<Amesos2Solver> solver;
+  // The factors: one of the two, by ordering.
+  Teuchos::RCP<const CrsMatrix> matrix;  ///< the matrix `amd` belongs to
+  Teuchos::RCP<Amesos2Solver> amd;
+  KluNestedDissection nestedDissection;
   // Gather-to-root path.
   bool gather = false;
   Teuchos::RCP<const Map> rootMap;          ///< all rows on rank 0 (distributed comm)
@@ -23,7 +26,11 @@ struct LinearSolver::Impl {
   Teuchos::RCP<CrsMatrix> serialMatrix;     ///< rank 0 only
 };
 
-LinearSolver::LinearSolver() : m_impl(new Impl) {}
+const char* LinearSolver::orderingName(Ordering ordering) {
+  return ordering == Ordering::NestedDissection ? "Nested Dissection" : "AMD";
+}
+
+LinearSolver::LinearSolver(Ordering ordering) : m_impl(new Impl), m_ordering(ordering) {}
 LinearSolver::~LinearSolver() = default;
 
 namespace {
@@ -45,12 +52,7 @@ void LinearSolver::factor(const Teuchos::RCP<const CrsMatrix>& A) {
   ++m_numFactorizations;
 
   if (comm->getSize() == 1) {
-    if (d.solver.is_null() || d.matrix.get() != A.get()) {
-      d.matrix = A;
-      d.solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", A);
-      d.solver->symbolicFactorization();
-    }
-    numericFactor(*d.solver);
+    factorLocal(A);
     return;
   }
 
@@ -72,7 +74,7 @@ void LinearSolver::factor(const Teuchos::RCP<const CrsMatrix>& A) {
   std::string failure;
   if (comm->getRank() == 0) {
     try {
-      factorOnRoot(d, rootMatrix);
+      factorOnRoot(rootMatrix);
     } catch (const std::exception& e) {
       failure = e.what();
     }
@@ -82,7 +84,31 @@ void LinearSolver::factor(const Teuchos::RCP<const CrsMatrix>& A) {
   if (failed) throw std::runtime_error(comm->getRank() == 0 ? failure : "KLU2 numeric factorization failed on rank 0");
 }
 
-void LinearSolver::factorOnRoot(Impl& d, const CrsMatrix& rootMatrix) {
+void LinearSolver::factorLocal(const Teuchos::RCP<const CrsMatrix>& A) {
+  Impl& d = *m_impl;
+  if (m_ordering == Ordering::NestedDissection) {
+    d.nestedDissection.factor(*A);  // reorders only when the pattern changed
+    return;
+  }
+  // Amesos2 keeps the symbolic factorization (AMD) of the matrix object it was made with.
+  if (d.amd.is_null() || d.matrix.get() != A.get()) {
+    d.matrix = A;
+    d.amd = Amesos2::create<CrsMatrix, MultiVector>("KLU2", A);
+    d.amd->symbolicFactorization();
+  }
+  numericFactor(*d.amd);
+}
+
+void LinearSolver::solveLocal(const MultiVector& b, MultiVector& x) {
+  Impl& d = *m_impl;
+  if (m_ordering == Ordering::NestedDissection)
+    d.nestedDissection.solve(b, x);
+  else
+    d.amd->solve(Teuchos::ptrFromRef(x), Teuchos::ptrFromRef(b));
+}
+
+void LinearSolver::factorOnRoot(const CrsMatrix& rootMatrix) {
+  Impl& d = *m_impl;
   // Same local CSR, maps on a serial communicator (a shallow copy of the arrays).
   const auto rootCols = rootMatrix.getColMap();
   std::vector<GO> colGids(rootCols->getNodeNumElements());
@@ -90,13 +116,11 @@ void LinearSolver::factorOnRoot(Impl& d, const CrsMatrix& rootMatrix) {
   auto serialComm = d.serialRowMap->getComm();
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   auto serialColMap = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(colGids), 0, serialComm));
-  // This constructor returns a fill-complete matrix.
+  // This constructor returns a fill-complete matrix. A new matrix object each time: the
+  // AMD path redoes its (cheap) ordering; the nested-dissection path compares patterns.
   d.serialMatrix = Teuchos::rcp(new CrsMatrix(rootMatrix.getLocalMatrixDevice(), d.serialRowMap, serialColMap,
                                               d.serialRowMap, d.serialRowMap));
-  // A new matrix object each time: KLU2 redoes its (cheap, AMD) ordering.
-  d.solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", d.serialMatrix);
-  d.solver->symbolicFactorization();
-  numericFactor(*d.solver);
+  factorLocal(d.serialMatrix);
 }
 
 void LinearSolver::solve(const MultiVector& b, MultiVector& x) {
@@ -104,7 +128,7 @@ void LinearSolver::solve(const MultiVector& b, MultiVector& x) {
   Impl& d = *m_impl;
   m_numSolves += static_cast<int>(b.getNumVectors());  // one back-substitution per column
   if (!d.gather) {
-    d.solver->solve(Teuchos::ptrFromRef(x), Teuchos::ptrFromRef(b));
+    solveLocal(b, x);
     return;
   }
   MultiVector bRoot(d.rootMap, b.getNumVectors()), xRoot(d.rootMap, b.getNumVectors());
@@ -112,7 +136,7 @@ void LinearSolver::solve(const MultiVector& b, MultiVector& x) {
   if (b.getMap()->getComm()->getRank() == 0) {
     MultiVector bSerial(d.serialRowMap, b.getNumVectors()), xSerial(d.serialRowMap, b.getNumVectors());
     Tpetra::deep_copy(bSerial, bRoot);  // same local layout
-    d.solver->solve(Teuchos::ptrFromRef(xSerial), Teuchos::ptrFromRef(bSerial));
+    solveLocal(bSerial, xSerial);
     Tpetra::deep_copy(xRoot, xSerial);
   }
   x.doExport(xRoot, *d.toRoot, Tpetra::INSERT);

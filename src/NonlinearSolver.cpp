@@ -92,6 +92,11 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
   Teuchos::setStringToIntegralParameter<int>(
       "Line Search", "Backtrack", "NOX line search: Backtrack (halving on ||F||), Polynomial, Full Step",
       Teuchos::tuple<std::string>("Backtrack", "Polynomial", "Full Step"), valid.get());
+  Teuchos::ParameterList& linear = valid->sublist("Linear Solver", false, "the direct solver of the Newton systems");
+  Teuchos::setStringToIntegralParameter<int>(
+      "Ordering", "Nested Dissection",
+      "fill-reducing ordering for KLU2: Nested Dissection (METIS), AMD (Amesos2's KLU2 as shipped)",
+      Teuchos::tuple<std::string>("Nested Dissection", "AMD"), &linear);
   Teuchos::ParameterList& cont = valid->sublist("Continuation", false, "continuation in n and e0");
   cont.set("Start Exponent", 1.0, "n at the first stage", positive);
   cont.set("Start Cutoff", 0.1, "e0 at the first stage (if larger than the target's)", positive);

@@ -13,7 +13,8 @@ namespace flowform {
 
 class FlowModel {
  public:
-  explicit FlowModel(Assembler& assembler);
+  explicit FlowModel(Assembler& assembler,
+                     LinearSolver::Ordering ordering = LinearSolver::Ordering::NestedDissection);
 
   const Assembler& assembler() const { return m_assembler; }
   /// Changes the physics (a continuation stage); the factorization no longer matches.

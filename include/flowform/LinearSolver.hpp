@@ -1,5 +1,12 @@
 // Direct solution of the Newton (and sensitivity) systems with Amesos2 KLU2.
 //
+// Ordering (case: Solver → Linear Solver → Ordering):
+//   "Nested Dissection" (default): METIS_NodeND, KLU2 called through its own functions
+//                       (KluNestedDissection.hpp: Amesos2::Solver takes no user ordering);
+//   "AMD": Amesos2::Solver's KLU2 as shipped (block-triangular form + AMD).
+// Both use KLU2's threshold partial pivoting; nested dissection has less fill on these
+// Jacobians and factors 1.9× faster at 3.2·10⁵ dofs (docs/BENCHMARKS.md §6).
+//
 // One process: KLU2 on the assembled matrix; the symbolic factorization (ordering) is done
 // once, since the sparsity never changes, and each new Jacobian costs one numeric
 // factorization. The factors stay until the next factor() call, so further right-hand
@@ -21,7 +28,11 @@ namespace flowform {
 
 class LinearSolver {
  public:
-  LinearSolver();
+  enum class Ordering { NestedDissection, Amd };
+  /// The names used in the case file, in the order of the enum.
+  static const char* orderingName(Ordering ordering);
+
+  explicit LinearSolver(Ordering ordering = Ordering::NestedDissection);
   ~LinearSolver();
 
   /// Factors A (numeric; symbolic too on the first call). Throws std::runtime_error when
@@ -30,15 +41,21 @@ class LinearSolver {
   /// x = A⁻¹ b with the current factors, one back-substitution per column of b.
   void solve(const MultiVector& b, MultiVector& x);
 
+  Ordering ordering() const { return m_ordering; }
   int numFactorizations() const { return m_numFactorizations; }
   /// Back-substitutions (right-hand sides solved) so far.
   int numSolves() const { return m_numSolves; }
 
  private:
   struct Impl;
+  /// Factors a matrix whose rows are all on this process (serial communicator).
+  void factorLocal(const Teuchos::RCP<const CrsMatrix>& A);
   /// Rank 0's part of a gathered factorization: the serial KLU2 on the gathered rows.
-  static void factorOnRoot(Impl& d, const CrsMatrix& rootMatrix);
+  void factorOnRoot(const CrsMatrix& rootMatrix);
+  /// x = A⁻¹ b on this process, with the factors of factorLocal.
+  void solveLocal(const MultiVector& b, MultiVector& x);
   std::unique_ptr<Impl> m_impl;
+  Ordering m_ordering;
   int m_numFactorizations = 0;
   int m_numSolves = 0;
 };

@@ -1,0 +1,138 @@
+#include "flowform/KluNestedDissection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Amesos2_KLU2_FunctionMap.hpp>  // KLU2's functions, in namespace KLU2
+#include <metis.h>
+
+namespace flowform {
+
+namespace {
+
+using KluInt = int;
+using KluCommon = KLU2::klu_common<double, KluInt>;
+using KluSymbolic = KLU2::klu_symbolic<double, KluInt>;
+using KluNumeric = KLU2::klu_numeric<double, KluInt>;
+
+/// METIS nested dissection of the graph of A + Aᵀ (diagonal left out), A given as CSR.
+/// Returns perm with perm[k] = the old index of the k-th row/column of the permuted matrix,
+/// which is KLU2's convention for P and Q. (METIS 5 returns that array as `perm`; its
+/// inverse is `iperm`.)
+std::vector<KluInt> nestedDissection(const std::vector<KluInt>& rowStart, const std::vector<KluInt>& cols) {
+  const KluInt n = static_cast<KluInt>(rowStart.size()) - 1;
+  // Aᵀ by counting.
+  std::vector<KluInt> tStart(n + 1, 0), tCols(cols.size());
+  for (KluInt c : cols) ++tStart[c + 1];
+  for (KluInt i = 0; i < n; ++i) tStart[i + 1] += tStart[i];
+  std::vector<KluInt> fill(tStart.begin(), tStart.end() - 1);
+  for (KluInt i = 0; i < n; ++i)
+    for (KluInt k = rowStart[i]; k < rowStart[i + 1]; ++k) tCols[fill[cols[k]]++] = i;
+  // Row i of A + Aᵀ: the union of the two rows, without i itself.
+  std::vector<idx_t> xadj(n + 1, 0), adjncy;
+  adjncy.reserve(2 * cols.size());
+  std::vector<KluInt> row;
+  for (KluInt i = 0; i < n; ++i) {
+    row.assign(cols.begin() + rowStart[i], cols.begin() + rowStart[i + 1]);
+    row.insert(row.end(), tCols.begin() + tStart[i], tCols.begin() + tStart[i + 1]);
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    for (KluInt j : row)
+      if (j != i) adjncy.push_back(j);
+    xadj[i + 1] = static_cast<idx_t>(adjncy.size());
+  }
+  idx_t nv = n;
+  std::vector<idx_t> perm(n), iperm(n);
+  if (n > 0) {
+    const int status = METIS_NodeND(&nv, xadj.data(), adjncy.data(), nullptr, nullptr, perm.data(), iperm.data());
+    if (status != METIS_OK)
+      throw std::runtime_error("METIS_NodeND failed (status " + std::to_string(status) + ") ordering the Jacobian");
+  }
+  return std::vector<KluInt>(perm.begin(), perm.end());
+}
+
+}  // namespace
+
+struct KluNestedDissection::Impl {
+  KluCommon common;
+  KluSymbolic* symbolic = nullptr;
+  KluNumeric* numeric = nullptr;
+  // The pattern the symbolic analysis belongs to: A's rows with columns as row indices.
+  std::vector<KluInt> rowStart, cols;
+
+  Impl() { KLU2::klu_defaults<double, KluInt>(&common); }
+  ~Impl() {
+    freeNumeric();
+    if (symbolic) KLU2::klu_free_symbolic<double, KluInt>(&symbolic, &common);
+  }
+  void freeNumeric() {
+    if (numeric) KLU2::klu_free_numeric<double, KluInt>(&numeric, &common);
+  }
+};
+
+KluNestedDissection::KluNestedDissection() : m_impl(new Impl) {}
+KluNestedDissection::~KluNestedDissection() = default;
+
+void KluNestedDissection::factor(const CrsMatrix& A) {
+  Impl& d = *m_impl;
+  const auto rowMap = A.getRowMap();
+  const auto colMap = A.getColMap();
+  const auto local = A.getLocalMatrixHost();
+  const KluInt n = static_cast<KluInt>(rowMap->getNodeNumElements());
+  if (A.getGlobalNumRows() != static_cast<Tpetra::global_size_t>(n))
+    throw std::logic_error("KluNestedDissection: the matrix is not all on this process");
+
+  // Column indices as row indices (the column map may order the columns differently).
+  std::vector<KluInt> rowStart(n + 1), cols(local.graph.entries.extent(0));
+  std::vector<KluInt> colToRow(colMap->getNodeNumElements());
+  for (size_t c = 0; c < colToRow.size(); ++c) colToRow[c] = rowMap->getLocalElement(colMap->getGlobalElement(c));
+  for (KluInt i = 0; i <= n; ++i) rowStart[i] = static_cast<KluInt>(local.graph.row_map(i));
+  for (size_t k = 0; k < cols.size(); ++k) cols[k] = colToRow[local.graph.entries(k)];
+
+  d.freeNumeric();
+  if (d.symbolic == nullptr || rowStart != d.rowStart || cols != d.cols) {
+    if (d.symbolic) KLU2::klu_free_symbolic<double, KluInt>(&d.symbolic, &d.common);
+    d.rowStart = std::move(rowStart);
+    d.cols = std::move(cols);
+    std::vector<KluInt> perm = nestedDissection(d.rowStart, d.cols);
+    // The same permutation on both sides keeps the diagonal on the diagonal; no block
+    // triangular form (a connected finite-element matrix is one block).
+    d.common.btf = 0;
+    d.symbolic = KLU2::klu_analyze_given<double, KluInt>(n, d.rowStart.data(), d.cols.data(), perm.data(),
+                                                          perm.data(), &d.common);
+    if (d.symbolic == nullptr)
+      throw std::runtime_error("KLU2 symbolic analysis failed (status " + std::to_string(d.common.status) + ")");
+  }
+  // CSR read as CSC: KLU2 factors Aᵀ (see the header).
+  d.numeric = KLU2::klu_factor<double, KluInt>(d.rowStart.data(), d.cols.data(),
+                                               const_cast<double*>(local.values.data()), d.symbolic, &d.common);
+  if (d.numeric == nullptr || d.common.status != KLU_OK) {
+    d.freeNumeric();
+    throw std::runtime_error(std::string("KLU2 numeric factorization failed (") +
+                             (d.common.status == KLU_SINGULAR ? "singular Jacobian" : "status " + std::to_string(d.common.status)) +
+                             ")");
+  }
+}
+
+void KluNestedDissection::solve(const MultiVector& b, MultiVector& x) const {
+  Impl& d = *m_impl;
+  if (d.numeric == nullptr) throw std::logic_error("KluNestedDissection::solve before a successful factor()");
+  Tpetra::deep_copy(x, b);
+  const KluInt n = static_cast<KluInt>(x.getLocalLength());
+  for (size_t j = 0; j < x.getNumVectors(); ++j) {
+    auto column = x.getDataNonConst(j);
+    // Aᵀ is factored, so the transposed solve gives A x = b.
+    KLU2::klu_tsolve<double, KluInt>(d.symbolic, d.numeric, n, 1, column.getRawPtr(), &d.common);
+  }
+}
+
+double KluNestedDissection::factorEntries() const {
+  const Impl& d = *m_impl;
+  return d.numeric ? static_cast<double>(d.numeric->lnz) + static_cast<double>(d.numeric->unz) : 0.0;
+}
+
+}  // namespace flowform
