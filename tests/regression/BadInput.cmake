@@ -84,6 +84,12 @@ flowform_exit_test(bad_input_set_no_value CASE channel_small.xml
 flowform_exit_test(bad_input_unknown_element_type CASE channel_small.xml
   SET "Mesh/Element Type=Hexagon"
   CONTAINS "Element Type" "Hexagon")
+flowform_exit_test(bad_input_unknown_ordering CASE channel_small.xml
+  SET "Solver/Linear Solver/Ordering=LU"
+  CONTAINS "Linear Solver" "Ordering" "LU" "Nested Dissection" "AMD")
+# Either ordering solves the good case.
+flowform_exit_test(regression_good_channel_small_amd CASE channel_small.xml STATUS 0 CONVERGED
+  SET "Solver/Linear Solver/Ordering=AMD")
 
 # --- material constants: n > 0, σ0 >= 0, γ > 0, e0 > 0 ------------------------------------------
 flowform_exit_test(bad_input_rate_exponent_zero CASE channel_small.xml
