@@ -19,7 +19,13 @@ namespace {
 
 /// Converged when the residual is small, absolutely or relative to the stage's first
 /// residual, AND the last Newton update is small relative to the solution:
-///   (||F|| ≤ atol  or  ||F|| ≤ rtol ||F_0||)  and  ||Δx|| ≤ utol (||x|| + utol).
+///   (||F|| ≤ atol  or  ||F|| ≤ rtol ||F_0||)  and  ||Δx|| ≤ utol (||x|| + utol),
+/// or when Newton has reached the round-off floor: a full step (no line-search cut) with
+///   ||Δx|| ≤ 10³ ε ||x||,
+/// a correction at the rounding level of x itself, which further iterations cannot improve.
+/// The residual then stays at about ε ||J|| ||x||, which atol (an absolute number) does not
+/// know: with velocities of order 10³ (channel, γ = 10³) it is 2.6·10⁻¹⁰ against
+/// atol = 10⁻¹⁰, and Newton would stagnate there until the iteration limit.
 class ResidualAndStepTest : public NOX::StatusTest::Generic {
  public:
   ResidualAndStepTest(double atol, double rtol, double utol) : m_atol(atol), m_rtol(rtol), m_utol(utol) {}
@@ -38,7 +44,10 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
     const double normX = group.getX().norm();
     const bool residualOk = m_normF <= m_atol || m_normF <= m_rtol * m_normF0;
     const bool stepOk = m_normDx <= m_utol * (normX + m_utol);
-    m_status = residualOk && stepOk ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+    double step = 1.0;
+    if (auto ls = dynamic_cast<const NOX::Solver::LineSearchBased*>(&solver)) step = ls->getStepSize();
+    m_atRoundoff = !residualOk && step == 1.0 && m_normDx <= kRoundoffSteps * kEpsilon * normX;
+    m_status = (residualOk && stepOk) || m_atRoundoff ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
     return m_status;
   }
   NOX::StatusTest::StatusType getStatus() const override { return m_status; }
@@ -48,9 +57,14 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
     return os;
   }
   double normDx() const { return m_normDx; }
+  /// The last check converged by the round-off rule (the residual tests failed).
+  bool atRoundoff() const { return m_atRoundoff; }
 
  private:
+  static constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+  static constexpr double kRoundoffSteps = 1e3;
   double m_atol, m_rtol, m_utol;
+  bool m_atRoundoff = false;
   double m_normF = 0.0, m_normF0 = 0.0, m_normDx = 0.0;
   NOX::StatusTest::StatusType m_status = NOX::StatusTest::Unevaluated;
   Teuchos::RCP<NOX::Abstract::Vector> m_scratch;
@@ -67,7 +81,7 @@ class NewtonLogger : public NOX::Observer {
     const double normDx = m_test.normDx();  // the status test ran just before (TOOLCHAIN.md)
     log() << "    newton " << std::setw(2) << solver.getNumIterations() << "  |F| = " << std::scientific
           << std::setprecision(3) << normF << "  |dx| = " << normDx << "  step = " << std::defaultfloat
-          << step << "\n";
+          << step << (m_test.atRoundoff() ? "  (converged: update at round-off)" : "") << "\n";
   }
 
  private:
