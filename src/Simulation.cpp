@@ -5,14 +5,15 @@
 #include <filesystem>
 #include <sstream>
 
-#include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <nlohmann/json.hpp>
 
 #include "flowform/BoundaryCurve.hpp"
+#include "flowform/CaseParameters.hpp"
 #include "flowform/InputError.hpp"
 #include "flowform/Log.hpp"
 #include "flowform/MeshReader.hpp"
+#include "flowform/contact/ToolCorners.hpp"
 #include "flowform/io/BoundaryCsvWriter.hpp"
 #include "flowform/io/JsonSummary.hpp"
 #include "flowform/io/XdmfWriter.hpp"
@@ -21,7 +22,6 @@ namespace flowform {
 
 namespace {
 
-using Teuchos::EnhancedNumberValidator;
 using Teuchos::ParameterList;
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -33,158 +33,16 @@ double timerSeconds(const std::string& name) {
   return t.is_null() ? 0.0 : t->totalElapsedTime();
 }
 
-/// The entries of `list` whose type differs from the valid one's. Checked before Teuchos'
-/// validation, whose number validators would try to convert a string ("stod") and report
-/// neither the parameter nor the value.
-void checkTypes(const ParameterList& list, const ParameterList& valid, const std::string& prefix = "") {
-  for (auto it = list.begin(); it != list.end(); ++it) {
-    const std::string& name = list.name(it);
-    const std::string path = prefix.empty() ? name : prefix + "/" + name;
-    const Teuchos::ParameterEntry* expected = valid.getEntryPtr(name);
-    if (!expected) continue;  // unknown names are Teuchos' to report, with the valid list
-    const Teuchos::ParameterEntry& given = list.entry(it);
-    if (expected->isList() && given.isList()) {
-      checkTypes(list.sublist(name), valid.sublist(name), path);
-    } else if (given.getAny().type() != expected->getAny().type()) {
-      throw InputError(path + " must be of type " + expected->getAny().typeName() + ", but the case gives " +
-                       given.getAny().typeName() + " '" + Teuchos::toString(given.getAny()) + "'");
-    }
-  }
-}
-
-/// Teuchos' message without its bookkeeping lines ("Throw number = 1", blank runs).
-std::string cleanTeuchosMessage(const std::string& what) {
-  std::istringstream in(what);
-  std::string line, out;
-  while (std::getline(in, line))
-    if (!line.empty() && line.rfind("Throw number", 0) != 0) out += line + "\n";
-  if (!out.empty()) out.pop_back();
-  return out;
-}
-
-/// Validates `list` against `valid` (setting defaults), naming the sublist on failure.
-void validateSublist(ParameterList& list, const ParameterList& valid, const std::string& where, int depth = 1000) {
-  try {
-    list.validateParametersAndSetDefaults(valid, depth);
-  } catch (const std::exception& e) {
-    throw InputError("in " + where + ": " + cleanTeuchosMessage(e.what()));
-  }
-}
-
-void requirePositive(const ParameterList& list, const std::string& name, const std::string& where) {
-  const double v = list.get<double>(name);
-  if (!(v > 0.0))
-    throw InputError(where + "/" + name + " must be > 0 (got " + Teuchos::toString(v) + ")");
-}
-
-/// Nodes shared by two walls where the material's angle is reflex (a convex tool corner, as
-/// at a die lip): with d the direction along wall a away from the node, the material angle
-/// is reflex when d points to the tool side of wall b (d·n_b > 0). There each wall's
-/// penetration test also needs the other wall's normal (ContactWall::addCornerNormal).
-void markConvexToolCorners(std::vector<ContactWall>& walls) {
-  for (size_t a = 0; a < walls.size(); ++a)
-    for (size_t b = 0; b < walls.size(); ++b) {
-      if (a == b) continue;
-      const BoundaryCurve& ca = walls[a].curve();
-      const BoundaryCurve& cb = walls[b].curve();
-      for (int ka = 0; ka < walls[a].numNodes(); ++ka)
-        for (int kb = 0; kb < walls[b].numNodes(); ++kb) {
-          if (ca.nodes[ka] != cb.nodes[kb]) continue;
-          const int along = walls[a].next(ka) >= 0 ? walls[a].next(ka) : walls[a].previous(ka);
-          if (along < 0) continue;
-          const double dx = walls[a].nodeCoordinates(along)[0] - walls[a].nodeCoordinates(ka)[0];
-          const double dy = walls[a].nodeCoordinates(along)[1] - walls[a].nodeCoordinates(ka)[1];
-          const auto& nb = cb.normals[kb];
-          if (dx * nb[0] + dy * nb[1] > 0.0) walls[a].addCornerNormal(ka, nb);
-        }
-    }
-}
-
 }  // namespace
 
-Teuchos::RCP<const ParameterList> Simulation::validParameters() {
-  static Teuchos::RCP<ParameterList> valid;
-  if (!valid.is_null()) return valid;
-  valid = Teuchos::rcp(new ParameterList("flowform"));
-  auto nonNegative = Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1e300));
-
-  ParameterList& problem = valid->sublist("Problem", false, "kind of model");
-  Teuchos::setStringToIntegralParameter<int>("Geometry", "Plane Strain",
-                                             "Plane Strain (per unit depth) or Axisymmetric (x = r, y = z)",
-                                             Teuchos::tuple<std::string>("Plane Strain", "Axisymmetric"), &problem);
-  problem.set("Body Force X", 0.0, "f_x, force per unit volume");
-  problem.set("Body Force Y", 0.0, "f_y, force per unit volume");
-
-  ParameterList& material = valid->sublist("Material", false, "rigid-viscoplastic law (SPEC §1)");
-  material.set("Yield Stress", 1.0, "σ0 >= 0 [stress]", nonNegative);
-  material.set("Rate Constant", 1.0, "γ > 0 [1/time]");
-  material.set("Rate Exponent", 1.0, "n > 0: σ̄ = σ0 + (e/γ)^(1/n)");
-  material.set("Strain Rate Cutoff", 1e-3, "e0 > 0: e_r = sqrt(e² + e0²) [1/time]");
-
-  ParameterList& stab = valid->sublist("Stabilization", false, "pressure stabilization");
-  stab.set("Beta", 0.1, "β in τ_K = β h_K² / (2 μ_K); h_K = cell diameter (docs/verification.md)", nonNegative);
-
-  valid->set("Mesh", *validMeshParameters(), "the mesh (gmsh .msh or .geo)");
-  // Free-form: one sublist per group. The template documents the entries (--help) and gives
-  // --set the types of entries the case does not have yet.
-  ParameterList& bcTemplate = valid->sublist("Boundary Conditions", false, "one sublist per boundary group name")
-                                  .sublist("<group name>", false, "the condition on one gmsh physical group");
-  bcTemplate.setParameters(*BoundaryConditions::validGroupParameters());
-  for (auto it = ContactWall::validParameters()->begin(); it != ContactWall::validParameters()->end(); ++it)
-    if (ContactWall::validParameters()->name(it) != "Type")
-      bcTemplate.setEntry(ContactWall::validParameters()->name(it), ContactWall::validParameters()->entry(it));
-  valid->set("Solver", *NonlinearSolver::validParameters(), "Newton and continuation");
-
-  ParameterList& output = valid->sublist("Output", false, "what is written");
-  output.set("Write Solution", true, "solution.h5 + solution.xdmf");
-  output.set("Boundary CSV", true, "one CSV per named boundary group");
-  output.set("Cell Fields", Teuchos::Array<std::string>({"strain_rate", "equivalent_stress", "viscosity"}),
-             "cell fields to write: any of strain_rate, equivalent_stress, viscosity");
-  valid->sublist("Responses", false, "functionals by name (include/flowform/Responses.hpp)")
-      .sublist("<response name>", false, "one functional")
-      .setParameters(*Responses::validParameters());
-  ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (SPEC §2)");
-  contact.set("Max Status Changes", 500, "give up (not converged) after this many changes",
-              Teuchos::rcp(new EnhancedNumberValidator<int>(0, 1000000)));
-  contact.set("Max Changes Per Node", 4,
-              "a node that changed this often keeps its status (no cycling); if it still violates its "
-              "criterion the run is reported not converged",
-              Teuchos::rcp(new EnhancedNumberValidator<int>(1, 1000)));
-  contact.set("Pressure Tolerance", 1e-3, "an active node is released when p < -this [stress]", nonNegative);
-  contact.set("Penetration Tolerance", 1e-4, "a free node is activated when u·n > this [velocity]", nonNegative);
-  valid->set("Sensitivity", *Sensitivity::validParameters(),
-             "sensitivities by direct differentiation and their finite-difference check (SPEC §4)");
-  valid->sublist("Regression", false, "expected values for a regression checker");
-  return valid;
-}
+Teuchos::RCP<const ParameterList> Simulation::validParameters() { return validCaseParameters(); }
 
 Simulation::Simulation(const ParameterList& caseParams, const std::string& baseDir,
                        const Teuchos::RCP<const Comm>& comm)
     : m_params(caseParams), m_comm(comm) {
   const auto start = std::chrono::steady_clock::now();
-  const ParameterList& valid = *validParameters();
-  checkTypes(m_params, valid);
-  // The root is only checked (names, no defaults): taking defaults there would copy the
-  // "<group name>" templates of the free-form sublists into the case.
-  try {
-    m_params.validateParameters(valid, 0);
-  } catch (const std::exception& e) {
-    throw InputError("in the case parameter list: " + cleanTeuchosMessage(e.what()));
-  }
-  for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output", "Contact"})
-    validateSublist(m_params.sublist(name), valid.sublist(name), name);
-  if (!m_params.isSublist("Mesh") || !m_params.sublist("Mesh").isParameter("File"))
-    throw InputError("the case has no Mesh/File: name a .msh or .geo file");
-  validateSublist(m_params.sublist("Mesh"), valid.sublist("Mesh"), "Mesh", 0);
-
+  validateCase(m_params);
   const ParameterList& mat = m_params.sublist("Material");
-  for (const char* name : {"Rate Constant", "Rate Exponent", "Strain Rate Cutoff"})
-    requirePositive(mat, name, "Material");
-  for (const auto& name : m_params.sublist("Output").get<Teuchos::Array<std::string>>("Cell Fields"))
-    if (name != "strain_rate" && name != "equivalent_stress" && name != "viscosity")
-      throw InputError("Output/Cell Fields: unknown field '" + name +
-                       "'; allowed: strain_rate, equivalent_stress, viscosity");
-
   m_physics.material = {mat.get<double>("Yield Stress"), mat.get<double>("Rate Constant"),
                         mat.get<double>("Rate Exponent"), mat.get<double>("Strain Rate Cutoff")};
   const ParameterList& problem = m_params.sublist("Problem");
@@ -218,9 +76,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   }
   markConvexToolCorners(m_walls);
   m_responses = std::make_unique<Responses>(m_params.sublist("Responses"), m_mesh);
-  // Only a case with a Sensitivity sublist gets one (with defaults): none means no work.
-  if (m_params.isSublist("Sensitivity"))
-    validateSublist(m_params.sublist("Sensitivity"), valid.sublist("Sensitivity"), "Sensitivity");
+  // Only a case with a Sensitivity sublist gets one: none means no work.
   m_sensitivity = std::make_unique<Sensitivity>(
       m_params.isSublist("Sensitivity") ? &m_params.sublist("Sensitivity") : nullptr, m_walls, *m_responses);
 
