@@ -123,6 +123,11 @@ void LinearSolver::factorOnRoot(const CrsMatrix& rootMatrix) {
   factorLocal(d.serialMatrix);
 }
 
+double LinearSolver::factorEntries() const {
+  const double entries = m_ordering == Ordering::NestedDissection ? m_impl->nestedDissection.factorEntries() : 0.0;
+  return entries > 0.0 ? entries : -1.0;
+}
+
 void LinearSolver::solve(const MultiVector& b, MultiVector& x) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: linear solve"));
   Impl& d = *m_impl;

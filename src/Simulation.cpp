@@ -326,7 +326,11 @@ void Simulation::writeOutput(const std::string& outDir) const {
   summary["linear_solver"] = {{"factorizations", m_model->linearSolver().numFactorizations()},
                               {"solves", m_model->linearSolver().numSolves()},
                               {"residuals", m_model->numResiduals()},
-                              {"jacobians", m_model->numJacobians()}};
+                              {"jacobians", m_model->numJacobians()},
+                              {"ordering", LinearSolver::orderingName(m_model->linearSolver().ordering())}};
+  // Fill of the last factorization (rank 0 holds it), where the solver reports it.
+  if (m_model->linearSolver().factorEntries() > 0.0)
+    summary["linear_solver"]["factor_entries"] = m_model->linearSolver().factorEntries();
   const double assemblyResidual = timerSeconds("flowform: assembly (residual)");
   const double assemblyJacobian = timerSeconds("flowform: assembly (Jacobian)");
   summary["timings"] = {{"total", m_setupSeconds + m_solveSeconds + m_sensitivitySeconds + secondsSince(start)},

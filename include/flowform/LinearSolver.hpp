@@ -42,6 +42,9 @@ class LinearSolver {
   void solve(const MultiVector& b, MultiVector& x);
 
   Ordering ordering() const { return m_ordering; }
+  /// Entries of L + U of the current factors on this process; -1 when unknown (the AMD
+  /// path: Amesos2 does not report them; ranks other than 0 on several processes).
+  double factorEntries() const;
   int numFactorizations() const { return m_numFactorizations; }
   /// Back-substitutions (right-hand sides solved) so far.
   int numSolves() const { return m_numSolves; }
