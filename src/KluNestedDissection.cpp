@@ -126,7 +126,8 @@ void KluNestedDissection::solve(const MultiVector& b, MultiVector& x) const {
   for (size_t j = 0; j < x.getNumVectors(); ++j) {
     auto column = x.getDataNonConst(j);
     // Aᵀ is factored, so the transposed solve gives A x = b.
-    KLU2::klu_tsolve<double, KluInt>(d.symbolic, d.numeric, n, 1, column.getRawPtr(), &d.common);
+    if (!KLU2::klu_tsolve<double, KluInt>(d.symbolic, d.numeric, n, 1, column.getRawPtr(), &d.common))
+      throw std::runtime_error("KLU2 solve failed (status " + std::to_string(d.common.status) + ")");
   }
 }
 
