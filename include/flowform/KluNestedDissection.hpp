@@ -3,10 +3,10 @@
 //
 // Amesos2::Solver's KLU2 adapter always orders with AMD (after a block-triangular
 // pre-ordering) and takes no user ordering. On the flow Jacobians AMD's fill grows faster
-// than nested dissection's: at 3.2·10⁵ dofs (channel, P1) L has 3.3·10⁷ entries with AMD
-// and 2.4·10⁷ with METIS_NodeND, and KLU2 factors in 28 s against 15 s; the ratio widens
-// with the mesh (docs/BENCHMARKS.md §6). This class therefore calls KLU2's own functions
-// (the ones Amesos2 wraps, from Amesos2's headers) with the permutation
+// than nested dissection's: on the channel (P1) at 3.2·10⁵ dofs L + U has 6.7·10⁷ entries
+// with AMD and 4.9·10⁷ with METIS_NodeND, and one factorization takes 24.8 s against 14.5 s;
+// at 10⁶ dofs 146 s against 88 s (docs/BENCHMARKS.md §6). This class therefore calls KLU2's own
+// functions (the ones Amesos2 wraps, from Amesos2's headers) with the permutation
 //
 //   P = METIS_NodeND(pattern of A + Aᵀ),   factor  P Aᵀ Pᵀ  (threshold partial pivoting, as
 //                                                            Amesos2's KLU2 does),

@@ -5,7 +5,8 @@
 //                       (KluNestedDissection.hpp: Amesos2::Solver takes no user ordering);
 //   "AMD": Amesos2::Solver's KLU2 as shipped (block-triangular form + AMD).
 // Both use KLU2's threshold partial pivoting; nested dissection has less fill on these
-// Jacobians and factors 1.9× faster at 3.2·10⁵ dofs (docs/BENCHMARKS.md §6).
+// Jacobians and factors 1.7× faster at 3.2·10⁵ and 10⁶ dofs, 0.02–0.07 s slower below
+// 10⁵ (docs/BENCHMARKS.md §6).
 //
 // One process: KLU2 on the assembled matrix; the symbolic factorization (ordering) is done
 // once, since the sparsity never changes, and each new Jacobian costs one numeric
