@@ -44,9 +44,9 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
     const double normX = group.getX().norm();
     const bool residualOk = m_normF <= m_atol || m_normF <= m_rtol * m_normF0;
     const bool stepOk = m_normDx <= m_utol * (normX + m_utol);
-    double step = 1.0;
-    if (auto ls = dynamic_cast<const NOX::Solver::LineSearchBased*>(&solver)) step = ls->getStepSize();
-    m_atRoundoff = !residualOk && step == 1.0 && m_normDx <= kRoundoffSteps * kEpsilon * normX;
+    m_step = 1.0;
+    if (auto ls = dynamic_cast<const NOX::Solver::LineSearchBased*>(&solver)) m_step = ls->getStepSize();
+    m_atRoundoff = !residualOk && m_step == 1.0 && m_normDx <= kRoundoffSteps * kEpsilon * normX;
     m_status = (residualOk && stepOk) || m_atRoundoff ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
     return m_status;
   }
@@ -57,6 +57,8 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
     return os;
   }
   double normDx() const { return m_normDx; }
+  /// The line-search step of the last iteration (1 for a full Newton step).
+  double step() const { return m_step; }
   /// The last check converged by the round-off rule (the residual tests failed).
   bool atRoundoff() const { return m_atRoundoff; }
 
@@ -65,6 +67,7 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
   static constexpr double kRoundoffSteps = 1e3;
   double m_atol, m_rtol, m_utol;
   bool m_atRoundoff = false;
+  double m_step = 1.0;
   double m_normF = 0.0, m_normF0 = 0.0, m_normDx = 0.0;
   NOX::StatusTest::StatusType m_status = NOX::StatusTest::Unevaluated;
   Teuchos::RCP<NOX::Abstract::Vector> m_scratch;
@@ -75,13 +78,11 @@ class NewtonLogger : public NOX::Observer {
  public:
   explicit NewtonLogger(const ResidualAndStepTest& test) : m_test(test) {}
   void runPostIterate(const NOX::Solver::Generic& solver) override {
-    double step = 1.0;
-    if (auto ls = dynamic_cast<const NOX::Solver::LineSearchBased*>(&solver)) step = ls->getStepSize();
     const double normF = solver.getSolutionGroup().getNormF();
-    const double normDx = m_test.normDx();  // the status test ran just before (TOOLCHAIN.md)
+    // |dx| and the step from the status test, which ran just before (TOOLCHAIN.md).
     log() << "    newton " << std::setw(2) << solver.getNumIterations() << "  |F| = " << std::scientific
-          << std::setprecision(3) << normF << "  |dx| = " << normDx << "  step = " << std::defaultfloat
-          << step << (m_test.atRoundoff() ? "  (converged: update at round-off)" : "") << "\n";
+          << std::setprecision(3) << normF << "  |dx| = " << m_test.normDx() << "  step = " << std::defaultfloat
+          << m_test.step() << (m_test.atRoundoff() ? "  (converged: update at round-off)" : "") << "\n";
   }
 
  private:
@@ -107,10 +108,13 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
       "Line Search", "Backtrack", "NOX line search: Backtrack (halving on ||F||), Polynomial, Full Step",
       Teuchos::tuple<std::string>("Backtrack", "Polynomial", "Full Step"), valid.get());
   Teuchos::ParameterList& linear = valid->sublist("Linear Solver", false, "the direct solver of the Newton systems");
-  Teuchos::setStringToIntegralParameter<int>(
-      "Ordering", "Nested Dissection",
+  using Ordering = LinearSolver::Ordering;
+  Teuchos::setStringToIntegralParameter<Ordering>(
+      "Ordering", LinearSolver::orderingName(Ordering::NestedDissection),
       "fill-reducing ordering for KLU2: Nested Dissection (METIS), AMD (Amesos2's KLU2 as shipped)",
-      Teuchos::tuple<std::string>("Nested Dissection", "AMD"), &linear);
+      Teuchos::tuple<std::string>(LinearSolver::orderingName(Ordering::NestedDissection),
+                                  LinearSolver::orderingName(Ordering::Amd)),
+      Teuchos::tuple<Ordering>(Ordering::NestedDissection, Ordering::Amd), &linear);
   Teuchos::ParameterList& cont = valid->sublist("Continuation", false, "continuation in n and e0");
   cont.set("Start Exponent", 1.0, "n at the first stage", positive);
   cont.set("Start Cutoff", 0.1, "e0 at the first stage (if larger than the target's)", positive);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <nlohmann/json.hpp>
 
@@ -85,10 +86,8 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
   m_assembler->setPhysics(m_physics);
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
-  const auto ordering = m_params.sublist("Solver").sublist("Linear Solver").get<std::string>("Ordering") == "AMD"
-                            ? LinearSolver::Ordering::Amd
-                            : LinearSolver::Ordering::NestedDissection;
-  m_model = std::make_unique<FlowModel>(*m_assembler, ordering);
+  m_model = std::make_unique<FlowModel>(*m_assembler, Teuchos::getIntegralValue<LinearSolver::Ordering>(
+                                                          m_params.sublist("Solver").sublist("Linear Solver"), "Ordering"));
   m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
