@@ -1,0 +1,42 @@
+"""flowform_tools: what the regression checks, benchmarks and plot scripts share.
+
+One place to run the flowform executable and read what it writes, so that the scripts in
+tests/regression/, bench/ and scripts/ do not each carry their own launcher and readers.
+
+  launcher   run flowform (case, output directory, --set overrides, mpirun -np, timeout,
+             log file, peak memory by /usr/bin/time -v) and get its exit status, summary and
+             log; run_command() for any other command line
+  summary    summary.json: load it, dotted-key access ("linear_solver.factorizations")
+  case       a case XML (or the "parameters" of a summary.json): contact walls, responses,
+             the tool boundary, geometry; variants of a case written to a new file
+  csvio      boundary_<group>.csv: rows, columns, integrals along the curve
+  h5io       solution.h5: mesh and nodal/cell fields (needs h5py and numpy)
+  sweep      sweep values ("0,0.1" or "0:0.5:0.1") and sweep.csv
+  numerics   observed order of convergence, Richardson extrapolation, relative difference
+  machine    machine and binary information printed with benchmark results
+  msh        small edits of gmsh 4 ASCII meshes
+  plotting   matplotlib (Agg) helpers shared by the plot scripts (needs matplotlib)
+
+Scripts find the package relative to their own file, without an install step:
+
+    sys.path.insert(0, os.path.join(<repository>, "python"))
+    from flowform_tools import launcher
+
+Only the standard library is imported here and by launcher, summary, case, csvio, sweep,
+numerics, machine and msh; h5io and plotting import numpy, h5py and matplotlib (Debian's
+/usr/bin/python3 has them: python3-numpy, python3-h5py, python3-matplotlib).
+"""
+import os
+
+#: The repository's root directory (the parent of python/).
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def repo_path(*parts):
+    """A path inside the repository, e.g. repo_path("xml", "channel.xml")."""
+    return os.path.join(REPO, *parts)
+
+
+def default_flowform():
+    """build/flowform of this repository (scripts/build puts it there)."""
+    return repo_path("build", "flowform")
