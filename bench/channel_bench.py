@@ -21,141 +21,33 @@ usage:
   --mpi NP              also run one size (--mpi-size, default 115) serially and on NP ranks
                         with mpirun and compare the velocity fields (max abs difference)
 
-Needs /usr/bin/time (Debian package `time`). h5py, if importable, is used to compare
-solution.h5; otherwise the boundary CSVs are compared.
+Every number comes from summary.json (and the peak memory from /usr/bin/time -v); runs go
+through python/flowform_tools (launcher, benchmark). Needs /usr/bin/time (Debian package
+`time`). h5py, if importable, is used to compare solution.h5; otherwise the boundary CSVs are
+compared.
 """
 import argparse
-import csv
-import datetime
 import json
 import os
-import platform
-import re
 import shutil
-import subprocess
 import sys
 import tempfile
-import time
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from flowform_tools import REPO, csvio, default_flowform, h5io, machine, summary  # noqa: E402
+from flowform_tools.benchmark import (CHANNEL_MATERIALS as MATERIALS, ELEMENTS, channel_dofs,  # noqa: E402
+                                      channel_size, require_tools, run_case)
+
 DEFAULT_SIZES = [40, 57, 81, 115, 163, 230, 325, 408]
 QUICK_SIZES = [8, 16, 32]
-ELEMENTS = {"tri": "Triangle", "quad": "Quadrilateral"}
-MATERIALS = {
-    # the channel case's own material
-    "nonlinear": [],
-    "newtonian": ["Material/Rate Exponent=1", "Material/Yield Stress=0"],
-}
-TIME = "/usr/bin/time"
-
-
-def require_tools(flowform, script):
-    """The absolute path of the flowform binary; exits with a message when it or GNU time is missing."""
-    flowform = os.path.abspath(flowform)
-    if not os.access(flowform, os.X_OK):
-        sys.exit(f"{script}: no executable flowform at {flowform} (give its path)")
-    if not os.access(TIME, os.X_OK):
-        sys.exit(f"{script}: {TIME} not found: apt-get install time")
-    return flowform
-
-
-def channel_dofs(n):
-    return 3 * (n + 1) * (2 * n + 1)
-
-
-def machine_info():
-    info = {"platform": platform.platform(), "date": datetime.datetime.now(datetime.timezone.utc)
-            .strftime("%Y-%m-%d %H:%M UTC")}
-    try:
-        out = subprocess.run(["lscpu"], stdout=subprocess.PIPE, text=True).stdout
-        for key in ("Model name", "CPU(s)"):
-            m = re.search(rf"^{re.escape(key)}:\s*(.+)$", out, re.M)
-            if m:
-                info[key] = m.group(1).strip()
-    except OSError:
-        pass
-    try:
-        with open("/proc/meminfo") as f:
-            kb = int(re.search(r"MemTotal:\s+(\d+)", f.read()).group(1))
-        info["memory"] = f"{kb / 2**20:.1f} GiB"
-    except (OSError, AttributeError):
-        pass
-    try:
-        info["commit"] = subprocess.run(["git", "-C", REPO, "rev-parse", "--short", "HEAD"],
-                                        stdout=subprocess.PIPE, text=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", REPO, "status", "--porcelain", "--untracked-files=no"],
-                               stdout=subprocess.PIPE, text=True).stdout.strip()
-        if dirty:
-            info["commit"] += " (work tree modified)"
-    except OSError:
-        pass
-    return info
-
-
-def parse_time_v(text):
-    """Peak RSS in bytes and wall seconds from GNU time -v output (None when absent)."""
-    rss = re.search(r"Maximum resident set size \(kbytes\):\s*(\d+)", text)
-    wall = re.search(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\):\s*([\d:.]+)", text)
-    seconds = None
-    if wall:
-        seconds = 0.0
-        for part in wall.group(1).split(":"):
-            seconds = 60 * seconds + float(part)
-    return (int(rss.group(1)) * 1024 if rss else None), seconds
-
-
-def count(summary, *paths):
-    """The first of several possible summary keys ("a/b") that is present, else None."""
-    for path in paths:
-        node = summary
-        for key in path.split("/"):
-            if not isinstance(node, dict) or key not in node:
-                node = None
-                break
-            node = node[key]
-        if isinstance(node, (int, float)) and not isinstance(node, bool):
-            return node
-    return None
-
-
-def run_case(flowform, case, outdir, overrides, np=1, timeout=None):
-    """Runs flowform once; returns a dict of results (status, summary, peak RSS, wall time)."""
-    command = [flowform, case, "-o", outdir, "--quiet"]
-    for o in overrides:
-        command += ["--set", o]
-    env = dict(os.environ)
-    if np > 1:
-        command = ["mpirun", "-np", str(np)] + command
-        env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    command = [TIME, "-v"] + command
-    start = time.monotonic()
-    try:
-        proc = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                              env=env, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        return {"status": "timeout", "wall": time.monotonic() - start}
-    wall = time.monotonic() - start
-    rss, _ = parse_time_v(proc.stderr)
-    # GNU time prints "Command exited with non-zero status N" first when N != 0.
-    result = {"status": proc.returncode, "wall": wall, "rss": rss,
-              "stderr": "\n".join(l for l in proc.stderr.splitlines()
-                                  if not l.startswith("\t") and "Command exited" not in l)}
-    try:
-        with open(os.path.join(outdir, "summary.json")) as f:
-            result["summary"] = json.load(f)
-    except (OSError, ValueError):
-        result["summary"] = None
-    return result
 
 
 def row_of(elem, material, n, result):
-    s = result.get("summary") or {}
+    s = result.get("summary") or summary.Summary()
     t = s.get("timings", {})
     dofs = s.get("dofs", channel_dofs(n))
-    jac_n = count(s, "linear_solver/jacobians", "jacobians", "counts/jacobians",
-                  "linear_solver/factorizations")
-    res_n = count(s, "linear_solver/residuals", "residuals", "counts/residuals",
-                  "residual_evaluations")
+    jac_n = s.number("linear_solver.jacobians", "linear_solver.factorizations")
+    res_n = s.number("linear_solver.residuals")
     ar, aj, fa = t.get("assembly_residual"), t.get("assembly_jacobian"), t.get("factorization")
     ratio_jr = None
     if ar and aj and jac_n and res_n:
@@ -216,28 +108,23 @@ def print_table(rows, title, out=sys.stdout):
 
 
 def read_velocity_h5(outdir):
-    import h5py  # noqa: optional
-    with h5py.File(os.path.join(outdir, "solution.h5"), "r") as f:
-        xy = [tuple(p[:2]) for p in f["/mesh/coordinates"][()]]
-        v = [tuple(p[:2]) for p in f["/fields/velocity"][()]]
-    return dict(zip(xy, v))
+    return h5io.nodal_map(outdir, "velocity")
 
 
 def read_velocity_csv(outdir):
-    """(x, y) -> (u_t, u_n) over every boundary CSV (a fallback when h5py is missing)."""
+    """(group, x, y) -> (u_t, u_n) over every boundary CSV (a fallback when h5py is missing)."""
     values = {}
     for name in sorted(os.listdir(outdir)):
-        if not name.endswith(".csv"):
+        if not (name.startswith("boundary_") and name.endswith(".csv")):
             continue
-        with open(os.path.join(outdir, name)) as f:
-            for rec in csv.DictReader(f):
-                values[(name, float(rec["x"]), float(rec["y"]))] = (float(rec["u_t"]), float(rec["u_n"]))
+        group = name[len("boundary_"):-len(".csv")]
+        for rec in csvio.rows(outdir, group):
+            values[(name, rec["x"], rec["y"])] = (rec["u_t"], rec["u_n"])
     return values
 
 
 def compare_parallel(flowform, case, n, elem, material, np, workdir):
-    overrides = [f"Mesh/Geo Parameters/N={float(n)}", f"Mesh/Element Type={ELEMENTS[elem]}"]
-    overrides += MATERIALS[material]
+    overrides = channel_size(n, elem) + MATERIALS[material]
     results = {}
     for ranks in (1, np):
         outdir = os.path.join(workdir, f"mpi_{elem}_{material}_{n}_np{ranks}")
@@ -274,7 +161,7 @@ def compare_parallel(flowform, case, n, elem, material, np, workdir):
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0],
                                 formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
-    p.add_argument("flowform", nargs="?", default=os.path.join(REPO, "build", "flowform"))
+    p.add_argument("flowform", nargs="?", default=default_flowform())
     p.add_argument("--case", default=os.path.join(REPO, "xml", "channel.xml"))
     p.add_argument("--quick", action="store_true")
     p.add_argument("--sizes", help="comma-separated N values")
@@ -303,10 +190,9 @@ def main():
         if m not in MATERIALS:
             sys.exit(f"channel_bench.py: unknown material '{m}' (nonlinear, newtonian)")
 
-    info = machine_info()
+    info = machine.machine_info()
     print("flowform channel benchmark")
-    built = datetime.datetime.fromtimestamp(os.path.getmtime(flowform), datetime.timezone.utc)
-    info["binary_built"] = built.strftime("%Y-%m-%d %H:%M UTC")
+    info["binary_built"] = machine.binary_built(flowform)
     print(f"  binary:  {flowform} (built {info['binary_built']}; the commit below is the work "
           f"tree's now, not necessarily the binary's)")
     print(f"  case:    {args.case}")
@@ -339,11 +225,9 @@ def main():
                                   f"previous run over {args.max_run_seconds:g} s", flush=True)
                             continue
                         outdir = os.path.join(workdir, f"{material}_{elem}_{n}")
-                        overrides = [f"Mesh/Geo Parameters/N={float(n)}",
-                                     f"Mesh/Element Type={ELEMENTS[elem]}"] + MATERIALS[material]
+                        overrides = channel_size(n, elem) + MATERIALS[material]
                         # Other work on the machine skews the times: the 1-minute load
                         # average is printed with each run (about 1 = this run alone).
-                        load_before = os.getloadavg()[0]
                         r = run_case(flowform, args.case, outdir, overrides, timeout=args.timeout)
                         row = row_of(elem, material, n, r)
                         table.append(row)
@@ -351,7 +235,7 @@ def main():
                         print(f"  {material} {elem} N={n}: {row['dofs']} dofs, status {row['status']}, "
                               f"newton {row['newton']}, wall {r['wall']:.1f} s, "
                               f"peak RSS {(row['rss'] or 0) / 2**20:.0f} MiB, "
-                              f"load before/after {load_before:.2f}/{os.getloadavg()[0]:.2f}", flush=True)
+                              f"load before/after {r['load'][0]:.2f}/{r['load'][1]:.2f}", flush=True)
                         if r["status"] not in (0, 3):
                             print("    " + r.get("stderr", "").strip()[-1500:].replace("\n", "\n    "))
                         if not args.keep:

@@ -38,34 +38,38 @@ usage:
   --report OUT.json ... run nothing: print the tables of earlier --json files again, the
                         repeats of the same case and h in several files merged (medians over all)
 
-Needs Debian's /usr/bin/python3 (numpy; h5py through tests/regression/extrusion_checks.py,
-whose lit(), observed_order() and richardson() are used) and /usr/bin/time (package time).
-Exit status 0 when every run converged (exit 0), 1 otherwise.
+The wall, tool and outlet names come from each case file (python/flowform_tools/case.py);
+runs go through python/flowform_tools (launcher). Every number is read from summary.json and
+the boundary CSVs, except the Newton iterations of each flow solve (first solve and
+re-solves) and the restarts, which summary.json does not have yet: they are parsed from the
+log (parse_solves, marked TODO). Needs Debian's /usr/bin/python3 (numpy) and /usr/bin/time
+(package time). Exit status 0 when every run converged (exit 0), 1 otherwise.
 """
 import argparse
-import datetime
 import json
-import math
 import os
 import re
 import statistics
-import subprocess
 import sys
-import time
 
 import numpy as np
 
-from channel_bench import REPO, TIME, machine_info, parse_time_v, require_tools
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from flowform_tools import csvio, default_flowform, launcher, repo_path  # noqa: E402
+from flowform_tools.benchmark import require_tools  # noqa: E402
+from flowform_tools.case import Case  # noqa: E402
+from flowform_tools.launcher import lit  # noqa: E402
+from flowform_tools.machine import binary_built, load, machine_info  # noqa: E402
+from flowform_tools.numerics import median, observed_order, richardson  # noqa: E402
 
-sys.path.insert(0, os.path.join(REPO, "tests", "regression"))
-from extrusion_checks import lit, observed_order, richardson  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from extrusion_tables import fmt, print_case  # noqa: E402
 
 CASES = {  # name: (case file, axisymmetric)
     "plane": ("xml/extrusion.xml", False),
     "axisym": ("xml/extrusion_axisym.xml", True),
 }
 DEFAULT_MESHES = "0.2,0.1,0.05,0.025"
-WALLS = ("container", "die_face", "die_land")
 TIMING_KEYS = ("setup", "assembly_residual", "assembly_jacobian", "factorization", "linear_solve",
                "solve", "output", "total")
 
@@ -77,29 +81,15 @@ TIMING_KEYS = ("setup", "assembly_residual", "assembly_jacobian", "factorization
 def run_flowform(flowform, case, outdir, h, timeout):
     """Runs flowform (log kept in outdir/flowform.log); returns status, wall, peak RSS, summary."""
     os.makedirs(outdir, exist_ok=True)
-    command = [TIME, "-v", flowform, case, "-o", outdir,
-               "--set", f"Mesh/Geo Parameters/h={lit(h)}", "--set", f"Mesh/Geo Parameters/hc={lit(h / 4)}"]
     log_path = os.path.join(outdir, "flowform.log")
-    built = datetime.datetime.fromtimestamp(os.path.getmtime(flowform), datetime.timezone.utc)
-    start = time.monotonic()
-    with open(log_path, "w") as log:
-        try:
-            proc = subprocess.run(command, stdout=log, stderr=subprocess.PIPE, text=True, timeout=timeout)
-            status, err = proc.returncode, proc.stderr
-        except subprocess.TimeoutExpired:
-            status, err = "timeout", ""
     # the binary's time stamp at the start: a rebuild during the benchmark shows up here
-    result = {"status": status, "wall": time.monotonic() - start, "rss": parse_time_v(err)[0],
-              "binary_built": built.strftime("%Y-%m-%d %H:%M:%S UTC"),
-              "command": command[2:], "dir": outdir,
-              "stderr": "\n".join(l for l in err.splitlines() if not l.startswith("\t"))}
-    try:
-        with open(os.path.join(outdir, "summary.json")) as f:
-            result["summary"] = json.load(f)
-    except (OSError, ValueError):
-        result["summary"] = None
-    result["solves"] = parse_solves(log_path)
-    return result
+    built = binary_built(flowform, seconds=True)
+    before = load()
+    r = launcher.run(flowform, case, outdir, [f"Mesh/Geo Parameters/h={lit(h)}", f"Mesh/Geo Parameters/hc={lit(h / 4)}"],
+                     log=log_path, timeout=timeout, peak_memory=True)
+    return {"status": "timeout" if r.timed_out else r.status, "wall": r.wall, "rss": r.peak_rss,
+            "binary_built": built, "command": r.command, "dir": outdir, "load": (before, load()),
+            "log_tail": r.log_tail(20), "summary": r.summary, "solves": parse_solves(log_path)}
 
 
 NEWTON_LINE = re.compile(r"^\s+newton\s+\d+\s")
@@ -108,7 +98,12 @@ NEWTON_LINE = re.compile(r"^\s+newton\s+\d+\s")
 def parse_solves(log_path):
     """Newton iterations of each flow solve, from the log: the first solve (predictor and
     continuation stages) and one re-solve after each "contact: wall ..." status change.
-    Also the number of re-solves that failed and restarted from the predictor."""
+    Also the number of re-solves that failed and restarted from the predictor.
+
+    TODO: the only numbers a benchmark still reads from flowform's human log. summary.json
+    has the total (newton_iterations), the status changes (contact_changes) and the first
+    solve's stages, but not the iterations per re-solve nor the restarts; read them from
+    summary.json once it reports them, and drop this parser."""
     solves, restarts = [], 0
     try:
         with open(log_path) as f:
@@ -130,42 +125,29 @@ def parse_solves(log_path):
 # Fluxes from the boundary CSVs
 
 
-def read_curve(outdir, group):
-    data = np.genfromtxt(os.path.join(outdir, f"boundary_{group}.csv"), delimiter=",", names=True)
-    return data[np.argsort(data["s"])]
-
-
-def flux(outdir, group, axisymmetric):
-    """∫ u_n ds (× 2πr, r = x, when axisymmetric) over the group, trapezoid rule in s."""
-    c = read_curve(outdir, group)
-    weight = 2 * math.pi * c["x"] if axisymmetric else 1.0
-    return float(np.trapz(c["u_n"] * weight, c["s"]))
-
-
-def mass_balance(outdir, axisymmetric, h):
-    q_in = -flux(outdir, "ram", axisymmetric)
-    q_out = flux(outdir, "outlet", axisymmetric)
-    walls = {w: flux(outdir, w, axisymmetric) / q_in for w in WALLS}
+def mass_balance(outdir, case_file, axisymmetric, h):
+    """Fluxes over the tool boundary (in), the outlet (the Traction group) and each wall, over
+    Q_in; the leak 1 − Q_out/Q_in; u_n at the die lip (the end shared by the last two walls in
+    flow order, die_face and die_land), on the wall before the lip (lip_wall)."""
+    scene = Case(case_file)
+    walls, tool, outlet = scene.contact_walls(), scene.tool_boundary(), scene.groups("Traction")[0]
+    q_in = -csvio.flux(outdir, tool, axisymmetric)
+    q_out = csvio.flux(outdir, outlet, axisymmetric)
+    flux = {w: csvio.flux(outdir, w, axisymmetric) / q_in for w in walls}
     leak = 1.0 - q_out / q_in
-    # the die-lip node: the die_face end shared with die_land
-    face = read_curve(outdir, "die_face")
-    land = read_curve(outdir, "die_land")
-    land_xy = {(round(x, 9), round(y, 9)) for x, y in zip(land["x"], land["y"])}
-    lip = [i for i, (x, y) in enumerate(zip(face["x"], face["y"])) if (round(x, 9), round(y, 9)) in land_xy]
+    lip_wall, land = walls[-2], walls[-1]
+    lip = csvio.shared_points(outdir, lip_wall, land)
+    face = csvio.rows(outdir, lip_wall, sort=True)
+    lip_u_n = [r["u_n"] for r in face if lip and (round(r["x"], 9), round(r["y"], 9)) == lip[0]]
     return {"q_in": q_in, "q_out": q_out, "leak": leak, "leak_over_hc": leak / (h / 4),
-            "wall_flux": walls, "lip_u_n": float(face["u_n"][lip[0]]) if lip else None}
+            "wall_flux": flux, "lip_wall": lip_wall, "lip_u_n": lip_u_n[0] if lip_u_n else None}
 
 
 # ------------------------------------------------------------------------------------------
 # Rows
 
 
-def median(values):
-    values = [v for v in values if v is not None]
-    return statistics.median(values) if values else None
-
-
-def row_of(case, h, runs, axisymmetric):
+def row_of(case, h, runs, case_file, axisymmetric):
     """One (case, h) row from its repeats: counts from the first run (checked identical in
     the others), times as medians over the repeats."""
     first = runs[0]
@@ -201,7 +183,7 @@ def row_of(case, h, runs, axisymmetric):
     row["resolve_newton_total"] = sum(re_)
     if first["status"] in (0, 3) and s:
         try:
-            row.update(mass_balance(first["dir"], axisymmetric, h))
+            row.update(mass_balance(first["dir"], case_file, axisymmetric, h))
         except (OSError, ValueError, IndexError) as e:
             row["mass_error"] = str(e)
     return row
@@ -224,56 +206,6 @@ def merge_rows(a, b):
     m["repeats_identical"] = (a["repeats_identical"] and b["repeats_identical"] and
                               all(a[k] == b[k] for k in ("ram_force", "newton", "contact_changes", "solves")))
     return m
-
-
-def fmt(v, form="{:.3g}"):
-    if v is None:
-        return "-"
-    if isinstance(v, str):
-        return v
-    return form.format(v)
-
-
-def markdown(header, rows):
-    out = "| " + " | ".join(header) + " |\n|" + "|".join("---" for _ in header) + "|\n"
-    for r in rows:
-        out += "| " + " | ".join(r) + " |\n"
-    return out
-
-
-def count_table(rows):
-    header = ["h", "dofs", "exit", "F (ram_force)", "Newton", "Newton 1st solve", "Newton in re-solves",
-              "flow solves", "Newton/re-solve mean, median (max)", "factorizations", "contact changes"]
-    body = []
-    for r in rows:
-        body.append([fmt(r["h"], "{:g}"), fmt(r["dofs"], "{}"), ",".join(str(s) for s in r["status"]),
-                     fmt(r["ram_force"], "{:.5f}"), fmt(r["newton"], "{}"), fmt(r["first_solve_newton"], "{}"),
-                     fmt(r["resolve_newton_total"], "{}"),
-                     fmt(r["solves"], "{}") + (f" ({r['restarts']} restarted)" if r["restarts"] else ""),
-                     (fmt(r["resolve_newton_mean"], "{:.1f}") + ", " + fmt(r["resolve_newton_median"], "{:g}") +
-                      " (" + fmt(r["resolve_newton_max"], "{}") + ")"),
-                     fmt(r["factorizations"], "{}"), fmt(r["contact_changes"], "{}")])
-    return markdown(header, body)
-
-
-def time_table(rows):
-    header = ["h", "setup", "asm_res", "asm_jac", "fact", "fact/call ms", "linsolve", "other", "total",
-              "fact/total", "peak RSS MiB", "total, each repeat"]
-    body = []
-    for r in rows:
-        other = per_call = None
-        if r["solve"] is not None:
-            other = r["solve"] - (r["assembly_residual"] + r["assembly_jacobian"] + r["factorization"] +
-                                  r["linear_solve"])
-        if r["factorization"] is not None and r["factorizations"]:
-            per_call = 1e3 * r["factorization"] / r["factorizations"]
-        body.append([fmt(r["h"], "{:g}"), fmt(r["setup"], "{:.3g}"), fmt(r["assembly_residual"], "{:.3g}"),
-                     fmt(r["assembly_jacobian"], "{:.3g}"), fmt(r["factorization"], "{:.4g}"),
-                     fmt(per_call, "{:.3g}"), fmt(r["linear_solve"], "{:.3g}"), fmt(other, "{:.3g}"),
-                     fmt(r["total"], "{:.4g}"), fmt(r["fact_share"], "{:.0%}"),
-                     fmt(r["rss"] / 2**20 if r["rss"] else None, "{:.0f}"),
-                     ", ".join(fmt(t, "{:.3g}") for t in r["total_all"])])
-    return markdown(header, body)
 
 
 def work_precision(rows):
@@ -312,65 +244,13 @@ def work_precision(rows):
     return info
 
 
-def wp_table(rows):
-    header = ["h", "dofs", "F", "error vs F_R", "total s (median)", "repeats", "load before/after"]
-    body = [[fmt(r["h"], "{:g}"), fmt(r["dofs"], "{}"), fmt(r["ram_force"], "{:.5f}"),
-             fmt(r.get("error_richardson"), "{:.2e}"), fmt(r["total"], "{:.4g}"), str(r["repeats"]),
-             ", ".join(f"{a:.1f}/{b:.1f}" for a, b in zip(r["load_before"], r["load_after"]))] for r in rows]
-    return markdown(header, body)
-
-
-def leak_table(rows):
-    header = ["h", "hc", "Q_in", "Q_out", "leak 1 − Q_out/Q_in", "leak / hc", "u_n at die lip",
-              "die_face flux / Q_in", "die_face flux / (hc Q_in)", "container", "die_land"]
-    body = []
-    for r in rows:
-        if "leak" not in r:
-            body.append([fmt(r["h"], "{:g}"), fmt(r["hc"], "{:g}")] + ["-"] * 9)
-            continue
-        w = r["wall_flux"]
-        body.append([fmt(r["h"], "{:g}"), fmt(r["hc"], "{:g}"), fmt(r["q_in"], "{:.5f}"),
-                     fmt(r["q_out"], "{:.5f}"), fmt(r["leak"], "{:.4f}"), fmt(r["leak_over_hc"], "{:.3f}"),
-                     fmt(r["lip_u_n"], "{:.3f}"), fmt(w["die_face"], "{:.4f}"), fmt(w["die_face"] / r["hc"], "{:.3f}"),
-                     fmt(w["container"], "{:.1e}"),
-                     fmt(w["die_land"], "{:.1e}")])
-    return markdown(header, body)
-
-
-def print_case(case, entry):
-    rows, wp, title = entry["rows"], entry["richardson"], f"{case} ({entry['case']})"
-    print(f"\n### cost, {title}: counts\n\n" + count_table(rows))
-    print(f"\n### cost, {title}: seconds (medians over the repeats)\n\n" + time_table(rows))
-    print(f"\n### work–precision of the ram force, {title}\n")
-    if "F_R" in wp:
-        print(f"three finest meshes h = {', '.join(f'{h:g}' for h in wp['h'])}: differences "
-              f"{wp['differences'][0]:+.5f}, {wp['differences'][1]:+.5f}; observed order p = {wp['order']:.3f}; "
-              f"F_R = {wp['F_R']:.5f}")
-        for t in wp.get("triples", []):
-            print(f"  triple h = {', '.join(f'{h:g}' for h in t['h'])}: p = {t['order']:.3f}, F_R = {t['F_R']:.5f}")
-        print()
-    else:
-        print(f"no extrapolation: {wp.get('error')}\n")
-    print(wp_table(rows))
-    print(f"\n### mass leak, {title} (Q over ram / outlet / walls, trapezoid in s"
-          f"{', × 2πr (r = x)' if entry.get('axisymmetric', CASES[case][1]) else ''})\n\n" + leak_table(rows))
-    leaks = [(r["h"], r["leak"]) for r in rows if r.get("leak", 0) > 0]
-    orders = [math.log(a[1] / b[1]) / math.log(a[0] / b[0]) for a, b in zip(leaks, leaks[1:])]
-    if orders:
-        print("observed order of the leak between successive meshes: " + ", ".join(f"{q:.2f}" for q in orders))
-    built = sorted({b for r in rows for b in r.get("binary_built", [])})
-    if len(built) > 1:
-        print(f"note: the binary changed during the runs (time stamps {', '.join(built)})")
-    sys.stdout.flush()
-
-
 # ------------------------------------------------------------------------------------------
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0],
                                 formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
-    p.add_argument("flowform", nargs="?", default=os.path.join(REPO, "build", "flowform"))
+    p.add_argument("flowform", nargs="?", default=default_flowform())
     p.add_argument("--cases", default="plane,axisym")
     p.add_argument("--meshes", default=DEFAULT_MESHES)
     p.add_argument("--repeats", type=int, default=3)
@@ -403,7 +283,7 @@ def main():
                 if not r["repeats_identical"]:
                     print(f"note: {case} h={r['h']:g}: the repeats differ in F, Newton iterations or solves")
             entry["richardson"] = work_precision(entry["rows"])
-            print_case(case, entry)
+            print_case(case, entry, CASES[case][1])
         return 0
 
     flowform = require_tools(args.flowform, "extrusion_bench.py")
@@ -414,8 +294,7 @@ def main():
     meshes = sorted((float(h) for h in args.meshes.split(",")), reverse=True)
 
     info = machine_info()
-    info["binary_built"] = datetime.datetime.fromtimestamp(os.path.getmtime(flowform), datetime.timezone.utc) \
-        .strftime("%Y-%m-%d %H:%M UTC")
+    info["binary_built"] = binary_built(flowform)
     print("flowform extrusion benchmark")
     print(f"  binary:  {flowform} (built {info['binary_built']}; the commit below is the work tree's now)")
     for k in ("date", "commit", "Model name", "CPU(s)", "memory"):
@@ -430,7 +309,7 @@ def main():
     failed = False
     for case in cases:
         case_file, axisymmetric = CASES[case]
-        case_path = os.path.join(REPO, case_file)
+        case_path = repo_path(case_file)
         rows, skip = [], False
         for h in meshes:
             if skip:
@@ -439,9 +318,7 @@ def main():
             runs = []
             for k in range(args.repeats):
                 outdir = os.path.join(args.out, f"{case}_h{h:g}_r{k}")
-                load_before = os.getloadavg()[0]
                 r = run_flowform(flowform, case_path, outdir, h, args.timeout)
-                r["load"] = (load_before, os.getloadavg()[0])
                 runs.append(r)
                 s = r.get("summary") or {}
                 t = (s.get("timings") or {}).get("total")
@@ -452,10 +329,10 @@ def main():
                       f"load {r['load'][0]:.2f}/{r['load'][1]:.2f}", flush=True)
                 if r["status"] != 0:
                     failed = True
-                    print("    " + (s.get("message") or r["stderr"].strip()[-1500:]).replace("\n", "\n    "))
+                    print("    " + (s.get("message") or r["log_tail"].strip()[-1500:]).replace("\n", "\n    "))
                 if r["status"] not in (0, 3) or r["wall"] > args.repeat_below:
                     break
-            row = row_of(case, h, runs, axisymmetric)
+            row = row_of(case, h, runs, case_path, axisymmetric)
             if row["newton"] is not None and row["log_newton"] != row["newton"]:
                 print(f"    note: the log has {row['log_newton']} Newton lines, summary.json {row['newton']}")
             if not row["repeats_identical"]:
@@ -465,7 +342,7 @@ def main():
                 skip = True
         results["cases"][case] = {"case": case_file, "axisymmetric": axisymmetric, "rows": rows,
                                   "richardson": work_precision(rows)}
-        print_case(case, results["cases"][case])
+        print_case(case, results["cases"][case], axisymmetric)
 
     path = args.json or os.path.join(args.out, "extrusion_bench.json")
     with open(path, "w") as f:

@@ -18,8 +18,8 @@ usage:
   /usr/bin/python3 bench/ordering_bench.py [FLOWFORM] [--sizes 40,81,163,230,408]
       [--element tri|quad] [--json OUT.json]
 
-Reuses bench/channel_bench.py (element names, machine information, one run under time -v).
-The exit status is 0 when every run exited 0.
+Runs go through python/flowform_tools (benchmark.run_case: one run under time -v); every
+number is read from summary.json. The exit status is 0 when every run exited 0.
 """
 import argparse
 import json
@@ -27,29 +27,35 @@ import os
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from channel_bench import ELEMENTS, MATERIALS, REPO, channel_dofs, machine_info, require_tools, run_case  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from flowform_tools import default_flowform, repo_path  # noqa: E402
+from flowform_tools.case import Case  # noqa: E402
+from flowform_tools.benchmark import (CHANNEL_MATERIALS as MATERIALS, ELEMENTS, NO_OUTPUT,  # noqa: E402
+                                      channel_dofs, channel_size, require_tools, run_case)
+from flowform_tools.machine import machine_info  # noqa: E402
+from flowform_tools.numerics import relative_difference  # noqa: E402
 
 ORDERINGS = ["Nested Dissection", "AMD"]
-RESPONSES = ["Responses/plastic_power/Type=Plastic Power",
-             "Responses/inlet_pressure/Type=Mean Pressure",
-             "Responses/inlet_pressure/Boundary=inlet"]
-NO_OUTPUT = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
 
 
-def relative_difference(a, b):
-    return abs(a - b) / max(abs(a), abs(b), 1e-300)
+def responses(case):
+    """Plastic power, and the mean pressure on the case's loaded boundary (the channel's inlet)."""
+    inlet = Case(case).loaded_groups()[0]
+    return ["Responses/plastic_power/Type=Plastic Power",
+            f"Responses/{inlet}_pressure/Type=Mean Pressure",
+            f"Responses/{inlet}_pressure/Boundary={inlet}"]
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("flowform", nargs="?", default=os.path.join(REPO, "build", "flowform"))
-    p.add_argument("--case", default=os.path.join(REPO, "xml", "channel.xml"))
+    p.add_argument("flowform", nargs="?", default=default_flowform())
+    p.add_argument("--case", default=repo_path("xml", "channel.xml"))
     p.add_argument("--sizes", default="40,81,163,230,408", help="N values (cells across)")
     p.add_argument("--element", default="tri", choices=sorted(ELEMENTS))
     p.add_argument("--json", help="write the raw results here")
     args = p.parse_args()
     flowform = require_tools(args.flowform, "ordering_bench.py")
+    extra = responses(args.case)
 
     info = machine_info()
     print("flowform ordering benchmark")
@@ -61,9 +67,8 @@ def main():
         for n in (int(s) for s in args.sizes.split(",")):
             row = {"N": n, "dofs": channel_dofs(n)}
             for ordering in ORDERINGS:
-                overrides = ([f"Mesh/Geo Parameters/N={float(n)}", f"Mesh/Element Type={ELEMENTS[args.element]}",
-                              f"Solver/Linear Solver/Ordering={ordering}"]
-                             + MATERIALS["newtonian"] + RESPONSES + NO_OUTPUT)
+                overrides = (channel_size(n, args.element) + [f"Solver/Linear Solver/Ordering={ordering}"]
+                             + MATERIALS["newtonian"] + extra + NO_OUTPUT)
                 r = run_case(flowform, args.case, os.path.join(tmp, f"N{n}_{ordering.replace(' ', '_')}"), overrides)
                 s = r.get("summary") or {}
                 if r["status"] != 0 or not s:
@@ -72,7 +77,7 @@ def main():
                     continue
                 row[ordering] = {"factorization": s["timings"]["factorization"], "total": s["timings"]["total"],
                                  "rss": r["rss"], "responses": s.get("functionals", {}),
-                                 "load": os.getloadavg()[0]}
+                                 "load": r["load"][1]}
                 print(f"  N={n} ({row['dofs']} dofs) {ordering}: factorization "
                       f"{row[ordering]['factorization']:.3f} s, peak RSS {r['rss'] / 2**20:.0f} MiB", flush=True)
             rows.append(row)

@@ -27,7 +27,8 @@ the primal's mean factorization + Jacobian assembly per call (run `last`, whose
 factorizations are all the primal's).
 
 Two responses are added to the channel (which has none) so that the DDM includes response
-derivatives: `plastic_power` (Plastic Power) and `inlet_pressure` (Mean Pressure, inlet).
+derivatives: `plastic_power` (Plastic Power) and `inlet_pressure` (Mean Pressure on the
+case's loaded boundary, the inlet).
 The full-run FD derivatives of those are compared with the DDM's.
 
 usage:
@@ -36,26 +37,26 @@ usage:
       [--out /tmp/sensitivity_bench]
   /usr/bin/python3 bench/sensitivity_bench.py --report OUT/sensitivity_bench.json
 
-Reuses bench/channel_bench.py (sizes, element names, machine information, running one case
-under /usr/bin/time -v). The exit status is 0 when every run exited 0.
+Runs go through python/flowform_tools (benchmark.run_case: one case under /usr/bin/time -v);
+every number is read from summary.json. The exit status is 0 when every run exited 0.
 """
 import argparse
 import json
 import math
 import os
-import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from channel_bench import ELEMENTS, REPO, channel_dofs, machine_info, require_tools, run_case  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from flowform_tools import default_flowform, repo_path  # noqa: E402
+from flowform_tools.benchmark import (ELEMENTS, NO_OUTPUT, channel_dofs, channel_size,  # noqa: E402
+                                      require_tools, run_case)
+from flowform_tools.case import Case  # noqa: E402
+from flowform_tools.machine import machine_info, uptime  # noqa: E402
+from flowform_tools.summary import lookup  # noqa: E402
 
 PARAMETERS = ["Yield Stress", "Rate Exponent", "Rate Constant"]
 DEFAULT_SIZES = [40, 81, 163, 230]  # 9 963, 40 098, 160 884, 319 473 dofs; 408: 1 002 459
-RESPONSES = ["Responses/plastic_power/Type=Plastic Power",
-             "Responses/inlet_pressure/Type=Mean Pressure",
-             "Responses/inlet_pressure/Boundary=inlet"]
-NO_OUTPUT = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
 FACTORIZATION_EXPONENT = 1.65  # KLU2 factorization time ~ dofs^1.65 (docs/BENCHMARKS.md §1)
 
 
@@ -65,25 +66,31 @@ def sensitivity_overrides(jacobian, check):
             f"Sensitivity/Finite Difference Check={'true' if check else 'false'}"]
 
 
+def responses(case):
+    """Plastic power, and the mean pressure on the case's loaded boundary (the channel's inlet)."""
+    inlet = Case(case).loaded_groups()[0]
+    return ["Responses/plastic_power/Type=Plastic Power",
+            f"Responses/{inlet}_pressure/Type=Mean Pressure",
+            f"Responses/{inlet}_pressure/Boundary={inlet}"]
+
+
 def timed_run(flowform, case, outdir, overrides, label):
-    """run_case with the load average before and after; prints one progress line."""
+    """run_case (with the load average before and after); prints one progress line."""
     os.makedirs(outdir, exist_ok=True)
-    load_before = os.getloadavg()[0]
     r = run_case(flowform, case, outdir, overrides)
     s = r.get("summary") or {}
     t = s.get("timings", {})
-    r["load"] = [load_before, os.getloadavg()[0]]
     print(f"    {label}: status {r['status']}, solve {t.get('solve', float('nan')):.2f} s, "
           f"ddm {t.get('sensitivity_ddm', 0):.3f} s, fd check {t.get('finite_difference_check', 0):.2f} s, "
-          f"wall {r['wall']:.1f} s, load {load_before:.2f}/{r['load'][1]:.2f}", flush=True)
+          f"wall {r['wall']:.1f} s, load {r['load'][0]:.2f}/{r['load'][1]:.2f}", flush=True)
     if r["status"] not in (0,):
         print("      " + (r.get("stderr") or "").strip()[-1500:].replace("\n", "\n      "), flush=True)
-    return {k: v for k, v in r.items() if k != "stderr"} | {"stderr_tail": (r.get("stderr") or "")[-1500:]}
+    return {k: v for k, v in r.items() if k not in ("stderr", "log")} | {"stderr_tail": (r.get("stderr") or "")[-1500:]}
 
 
 def run_size(flowform, case, out, elem, n, full_fd):
     """Every run of one mesh size; returns the raw results (summaries included)."""
-    base = [f"Mesh/Geo Parameters/N={float(n)}", f"Mesh/Element Type={ELEMENTS[elem]}"] + RESPONSES + NO_OUTPUT
+    base = channel_size(n, elem) + responses(case) + NO_OUTPUT
     d = os.path.join(out, f"{elem}_N{n}")
     size = {"N": n, "elem": elem, "dofs": channel_dofs(n), "runs": {}}
     print(f"  {elem} N={n} ({channel_dofs(n)} dofs)", flush=True)
@@ -106,12 +113,8 @@ def run_size(flowform, case, out, elem, n, full_fd):
 
 
 def get(run, *path):
-    node = run.get("summary") or {}
-    for key in path:
-        if not isinstance(node, dict) or key not in node:
-            return None
-        node = node[key]
-    return node
+    """summary.json of a run (as stored in the JSON) at a key path; None when missing."""
+    return lookup(run.get("summary") or {}, path, None)
 
 
 def analyse(size):
@@ -246,14 +249,10 @@ def print_tables(rows, info):
         print(f"\nuptime before: {info.get('uptime_before')}\nuptime after:  {info['uptime_after']}")
 
 
-def uptime():
-    return subprocess.run(["uptime"], stdout=subprocess.PIPE, text=True).stdout.strip()
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("flowform", nargs="?", default=os.path.join(REPO, "build", "flowform"))
-    p.add_argument("--case", default=os.path.join(REPO, "xml", "channel.xml"))
+    p.add_argument("flowform", nargs="?", default=default_flowform())
+    p.add_argument("--case", default=repo_path("xml", "channel.xml"))
     p.add_argument("--sizes", default=",".join(map(str, DEFAULT_SIZES)), help="N values (cells across)")
     p.add_argument("--element", default="tri", choices=sorted(ELEMENTS))
     p.add_argument("--full-fd-max-dofs", type=int, default=200000,

@@ -7,6 +7,7 @@ of a run's summary.json), so that no script hard-codes group or response names.
     scene.tool_boundary()            # 'ram': the boundary that force is measured on
     scene.response("Mean Pressure", boundary="ram")   # 'ram_pressure'
     scene.groups("Traction")         # ['outlet']
+    case.Case("xml/channel.xml").loaded_groups()      # ['inlet']: a non-zero traction
     scene.axisymmetric               # False
 
     scene = case.Scene.from_summary(run.summary)      # the same questions about a finished run
@@ -76,6 +77,13 @@ class Scene:
 
     def group(self, name):
         return self.sublist("Boundary Conditions", name)
+
+    def loaded_groups(self):
+        """The groups with a non-zero prescribed traction component (e.g. the channel's inlet,
+        where the driving pressure acts)."""
+        return [g for g in self.groups()
+                if any(isinstance(self.group(g).get(k), float) and self.group(g)[k] != 0.0
+                       for k in ("Traction X", "Traction Y"))]
 
     # --- responses -----------------------------------------------------------------------------
 
