@@ -10,10 +10,10 @@
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
-#include "flowform/CaseOverrides.hpp"
-#include "flowform/InputError.hpp"
-#include "flowform/Log.hpp"
-#include "flowform/Simulation.hpp"
+#include "flowform/drivers/CaseOverrides.hpp"
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/drivers/Simulation.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "flowform/Responses.hpp"
+#include "flowform/assembly/Responses.hpp"
 
 #include <cmath>
 #include <type_traits>
@@ -7,11 +7,13 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "flowform/BoundaryCurve.hpp"
-#include "flowform/EvaluationTypes.hpp"
-#include "flowform/InputError.hpp"
-#include "flowform/SensitivityParameter.hpp"
-#include "flowform/kernels/FlowResidual.hpp"
+#include "flowform/assembly/EvaluationTypes.hpp"
+#include "flowform/assembly/SensitivityParameter.hpp"
+#include "flowform/core/InputError.hpp"
+#include "flowform/discretization/CellGeometry.hpp"
+#include "flowform/discretization/ElementLayout.hpp"
+#include "flowform/mesh/BoundaryCurve.hpp"
+#include "flowform/physics/FlowResidual.hpp"
 
 namespace flowform {
 
@@ -20,7 +22,7 @@ Teuchos::RCP<const Teuchos::ParameterList> Responses::validParameters() {
   if (!valid.is_null()) return valid;
   valid = Teuchos::rcp(new Teuchos::ParameterList("Response"));
   Teuchos::setStringToIntegralParameter<int>(
-      "Type", "Boundary Force", "what to compute (see include/flowform/Responses.hpp)",
+      "Type", "Boundary Force", "what to compute (see include/flowform/assembly/Responses.hpp)",
       Teuchos::tuple<std::string>("Boundary Force", "Mean Pressure", "Boundary Power", "Plastic Power",
                                   "Friction Power", "Penalty Power", "Stabilization Power", "Dead Zone"),
       valid.get());
@@ -64,75 +66,65 @@ TangentFad sumOverRanks(const Comm& comm, const TangentFad& local) {
   return dual<TangentFad>(sumOverRanks(comm, local.val()), sumOverRanks(comm, local.dx(0)));
 }
 
-/// Value (Scalar double) or value and derivative (tangent) of an overlap dof.
+/// Value (Scalar double) or value and derivative (tangent) of dof `d` of a workset.
 template <typename Scalar>
-struct DofReader {
-  decltype(std::declval<const Vector&>().getLocalViewHost(Tpetra::Access::ReadOnly)) x, dx;
-  bool hasDirection = false;
-  Scalar operator()(LO i) const {
-    Scalar s;
-    setInput(s, x(i, 0), hasDirection ? dx(i, 0) : 0.0);
-    return s;
-  }
-};
+Scalar valueAt(const Workset& ws, LO d) {
+  Scalar s;
+  gather(ws, &d, 1, &s);
+  return s;
+}
 
-template <typename Scalar>
-DofReader<Scalar> reader(const Vector& x, const Vector* dx) {
-  DofReader<Scalar> r;
-  r.x = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+/// A workset that reads `x` (and the direction `dx`) on their own map.
+Workset reader(const Vector& x, const Vector* dx) {
+  Workset ws;
+  ws.x = x.getLocalViewHost(Tpetra::Access::ReadOnly);
   if (dx) {
-    r.dx = dx->getLocalViewHost(Tpetra::Access::ReadOnly);
-    r.hasDirection = true;
+    ws.dx = dx->getLocalViewHost(Tpetra::Access::ReadOnly);
+    ws.hasDirection = true;
   }
-  return r;
+  return ws;
 }
 
 /// ∫ 2μ D:D dΩ (plastic power) and Σ τ_K ∫ ∇p·(∇p − f) (stabilization power) over this
 /// rank's cells, and (values only) the dead-zone area.
 template <typename Scalar>
-void cellIntegrals(const DofReader<Scalar>& x, const Mesh& mesh, const DofMap& dofMap, const FlowPhysics& physics,
+void cellIntegrals(const Workset& x, const Mesh& mesh, const DofMap& dofMap, const FlowPhysics& physics,
                    const MaterialParameters<Scalar>& material, double deadSpeed, Scalar& plasticPower,
                    Scalar& stabilizationPower, double& deadArea) {
-  const int npc = nodesPerCell(mesh.cellType);
+  const int npc = dofMap.nodesPerCell();
   const Geometry geometry = physics.kernel.geometry;
-  CellQuadrature rule, centroid;
-  std::array<double, 2> xy[kMaxNodesPerCell];
-  Scalar dofs[kDofsPerNode * kMaxNodesPerCell];
+  CellGeometry g;  // the kernel's own rule, so that the powers match the discrete equations exactly
+  LO dofs[kNumFields * kMaxNodesPerCell];
+  Scalar values[kNumFields * kMaxNodesPerCell];
   plasticPower = stabilizationPower = 0.0;
   deadArea = 0.0;
-  const int order = (mesh.cellType == CellType::Triangle3 && geometry == Geometry::PlaneStrain) ? 1 : 2;
   for (size_t k = 0; k < dofMap.cells().size(); ++k) {
-    const LO* nodes = &dofMap.cellNodes()[npc * k];
-    for (int a = 0; a < npc; ++a) {
-      xy[a] = mesh.coords[dofMap.overlapNodes()[nodes[a]]];
-      for (int c = 0; c < kDofsPerNode; ++c) dofs[kDofsPerNode * a + c] = x(kDofsPerNode * nodes[a] + c);
-    }
-    // The kernel's own rule, so that the powers match the discrete equations exactly.
-    computeCellQuadrature(mesh.cellType, xy, order, rule);
-    computeCellQuadrature(mesh.cellType, xy, 1, centroid);
-    const auto dc = strainRateAt(centroid, 0, geometry, dofs);
-    const Scalar muK = viscosity(regularizedStrainRate(dc.ddot(), material), material);
-    const double h = cellDiameter(mesh.cellType, xy);
-    const Scalar tau = physics.kernel.beta * h * h / (2.0 * muK);
-    for (int q = 0; q < rule.numPoints; ++q) {
-      const auto d = strainRateAt(rule, q, geometry, dofs);
+    computeCellGeometry(mesh, dofMap.cells()[k], geometry, g);
+    const LO* nodes = dofMap.cellNodes(k);
+    for (int a = 0; a < npc; ++a)
+      for (int c = 0; c < kNumFields; ++c) dofs[EqualOrderLayout::index(a, c)] = dofMap.dof(nodes[a], c);
+    gather(x, dofs, EqualOrderLayout::numDofs(npc), values);
+    const Scalar tau =
+        stabilizationTau(physics.kernel.beta, g.diameter, centroidViscosity(g.centroid, geometry, material, values));
+    for (int q = 0; q < g.rule.numPoints; ++q) {
+      const auto d = strainRateAt(g.rule, q, geometry, values);
       const Scalar mu = viscosity(regularizedStrainRate(d.ddot(), material), material);
-      const double w = measureWeight(rule, q, geometry);
+      const double w = measureWeight(g.rule, q, geometry);
       plasticPower += w * 2.0 * mu * d.ddot();
       Scalar px = 0.0, py = 0.0;
       for (int a = 0; a < npc; ++a) {
-        px += rule.dNdx[q][a] * dofs[kDofsPerNode * a + kP];
-        py += rule.dNdy[q][a] * dofs[kDofsPerNode * a + kP];
+        px += g.rule.dNdx[q][a] * values[EqualOrderLayout::index(a, kP)];
+        py += g.rule.dNdy[q][a] * values[EqualOrderLayout::index(a, kP)];
       }
       stabilizationPower += w * tau * (px * (px - physics.kernel.bodyForce[0]) + py * (py - physics.kernel.bodyForce[1]));
     }
     double ux = 0.0, uy = 0.0;
     for (int a = 0; a < npc; ++a) {
-      ux += centroid.N[0][a] * x.x(kDofsPerNode * nodes[a] + kUx, 0);  // values only
-      uy += centroid.N[0][a] * x.x(kDofsPerNode * nodes[a] + kUy, 0);
+      ux += g.centroid.N[0][a] * x.x(dofs[EqualOrderLayout::index(a, kUx)], 0);  // values only
+      uy += g.centroid.N[0][a] * x.x(dofs[EqualOrderLayout::index(a, kUy)], 0);
     }
     if (std::hypot(ux, uy) < deadSpeed) {
-      for (int q = 0; q < rule.numPoints; ++q) deadArea += measureWeight(rule, q, geometry);
+      for (int q = 0; q < g.rule.numPoints; ++q) deadArea += measureWeight(g.rule, q, geometry);
     }
   }
 }
@@ -157,8 +149,9 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
   if (tangent) assembler.tangent(xOwned, dxOwned, h, dReactions, false);
   xOverlap.doImport(xOwned, *dofMap.importer(), Tpetra::INSERT);
   if (dxOwned) dxOverlap.doImport(*dxOwned, *dofMap.importer(), Tpetra::INSERT);
-  const DofReader<Scalar> R = reader<Scalar>(reactions, tangent ? &dReactions : nullptr);
-  const DofReader<Scalar> x = reader<Scalar>(xOverlap, dxOwned ? &dxOverlap : nullptr);
+  const Workset R = reader(reactions, tangent ? &dReactions : nullptr);  // owned dofs: the overlap's first ones
+  const Workset x = reader(xOverlap, dxOwned ? &dxOverlap : nullptr);
+  auto at = [](const Workset& ws, LO d) { return valueAt<Scalar>(ws, d); };
   const MaterialParameters<Scalar> material = materialFor<Scalar>(assembler.physics().material, h);
 
   for (const Response& r : m_responses) {
@@ -168,10 +161,10 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
       for (size_t k = 0; k < curve.nodes.size(); ++k) {
         const LO n = dofMap.overlapIndex(curve.nodes[k]);
         if (n < 0 || n >= dofMap.numOwnedNodes()) continue;  // each node once, by its owner
-        const Scalar Rx = R(kDofsPerNode * n + kUx), Ry = R(kDofsPerNode * n + kUy);
+        const Scalar Rx = at(R, dofMap.dof(n, kUx)), Ry = at(R, dofMap.dof(n, kUy));
         if (r.type == "Boundary Force") local += r.component == "X" ? Rx : Ry;
         if (r.type == "Mean Pressure") local -= Rx * curve.normals[k][0] + Ry * curve.normals[k][1];
-        if (r.type == "Boundary Power") local += Rx * x(kDofsPerNode * n + kUx) + Ry * x(kDofsPerNode * n + kUy);
+        if (r.type == "Boundary Power") local += Rx * at(x, dofMap.dof(n, kUx)) + Ry * at(x, dofMap.dof(n, kUy));
       }
       Scalar value = sumOverRanks(comm, local);
       if (r.type == "Mean Pressure") {
@@ -200,10 +193,10 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
           const LO n = dofMap.overlapIndex(wall.curve().nodes[k]);
           if (n < 0 || n >= dofMap.numOwnedNodes()) continue;
           auto pressure = [&](int j) {
-            return j < 0 ? Scalar(0.0) : x(kDofsPerNode * dofMap.overlapIndex(wall.curve().nodes[j]) + kP);
+            return j < 0 ? Scalar(0.0) : at(x, dofMap.dof(dofMap.overlapIndex(wall.curve().nodes[j]), kP));
           };
-          const Scalar u[2] = {x(kDofsPerNode * n + kUx), x(kDofsPerNode * n + kUy)};
-          const Scalar p[3] = {pressure(wall.previous(k)), x(kDofsPerNode * n + kP), pressure(wall.next(k))};
+          const Scalar u[2] = {at(x, dofMap.dof(n, kUx)), at(x, dofMap.dof(n, kUy))};
+          const Scalar p[3] = {pressure(wall.previous(k)), at(x, dofMap.dof(n, kP)), pressure(wall.next(k))};
           const auto& nk = wall.curve().normals[k];
           const Scalar g = wall.tangentialForce(k, fp, u, p);
           if (r.type == "Friction Power") {

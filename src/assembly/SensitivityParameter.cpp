@@ -1,9 +1,9 @@
-#include "flowform/SensitivityParameter.hpp"
+#include "flowform/assembly/SensitivityParameter.hpp"
 
 #include <cmath>
 
-#include "flowform/Assembler.hpp"
-#include "flowform/InputError.hpp"
+#include "flowform/physics/FlowPhysics.hpp"
+#include "flowform/core/InputError.hpp"
 
 namespace flowform {
 

@@ -1,4 +1,4 @@
-#include "flowform/BoundaryConditions.hpp"
+#include "flowform/bc/BoundaryConditions.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -6,8 +6,8 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "flowform/BoundaryCurve.hpp"
-#include "flowform/InputError.hpp"
+#include "flowform/mesh/BoundaryCurve.hpp"
+#include "flowform/core/InputError.hpp"
 
 namespace flowform {
 
@@ -95,7 +95,18 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParamet
 }
 
 BoundaryConditions::BoundaryConditions(const Teuchos::ParameterList& bcList, const Mesh& mesh,
-                                       const DofMap& dofMap) {
+                                       const DofMap& dofMap)
+    : m_bcList(bcList), m_dofMap(dofMap) {
+  build(mesh);
+}
+
+void BoundaryConditions::refreshGeometry(const Mesh& mesh) { build(mesh); }
+
+void BoundaryConditions::build(const Mesh& mesh) {
+  const Teuchos::ParameterList& bcList = m_bcList;
+  const DofMap& dofMap = m_dofMap;
+  m_constraints.clear();
+  m_tractionEdges.clear();
   std::vector<std::vector<LinearCondition>> conditions(mesh.numNodes());
   std::vector<std::pair<const BoundaryGroup*, std::array<double, 2>>> tractionGroups;
 
@@ -162,18 +173,18 @@ BoundaryConditions::BoundaryConditions(const Teuchos::ParameterList& bcList, con
 
 void BoundaryConditions::imposeOnSolution(Vector& xOwned) const {
   auto x = xOwned.getLocalViewHost(Tpetra::Access::ReadWrite);
-  const size_t numOwned = xOwned.getLocalLength() / kDofsPerNode;
-  for (size_t i = 0; i < numOwned; ++i) {
+  for (LO i = 0; i < m_dofMap.numOwnedNodes(); ++i) {
     const NodeConstraint& nc = m_constraints[i];
-    double* u = &x(kDofsPerNode * i, 0);
+    double& ux = x(m_dofMap.dof(i, kUx), 0);
+    double& uy = x(m_dofMap.dof(i, kUy), 0);
     if (nc.kind == NodeConstraint::Kind::Full) {
-      u[kUx] = nc.value[0];
-      u[kUy] = nc.value[1];
+      ux = nc.value[0];
+      uy = nc.value[1];
     } else if (nc.kind == NodeConstraint::Kind::Single) {
       // Move u along a until a·u = b (a is a unit vector).
-      const double gap = nc.b - (nc.a[0] * u[kUx] + nc.a[1] * u[kUy]);
-      u[kUx] += gap * nc.a[0];
-      u[kUy] += gap * nc.a[1];
+      const double gap = nc.b - (nc.a[0] * ux + nc.a[1] * uy);
+      ux += gap * nc.a[0];
+      uy += gap * nc.a[1];
     }
   }
 }

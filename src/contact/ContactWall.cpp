@@ -4,20 +4,10 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "flowform/InputError.hpp"
+#include "flowform/contact/ToolCorners.hpp"
+#include "flowform/core/InputError.hpp"
 
 namespace flowform {
-
-const char* frictionBranchName(FrictionBranch b) {
-  switch (b) {
-    case FrictionBranch::Free: return "free";
-    case FrictionBranch::NoFriction: return "no_friction";
-    case FrictionBranch::Stick: return "stick";
-    case FrictionBranch::Slip: return "slip";
-    case FrictionBranch::SlipTresca: return "slip_tresca";
-  }
-  return "?";
-}
 
 Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
   static Teuchos::RCP<Teuchos::ParameterList> valid;
@@ -25,11 +15,15 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
   valid = Teuchos::rcp(new Teuchos::ParameterList("Contact Wall"));
   using Teuchos::EnhancedNumberValidator;
   auto nonNegative = Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1e300));
-  valid->set("Type", "Contact Wall", "a frictional contact wall (SPEC §2)");
-  Teuchos::setStringToIntegralParameter<int>(
-      "Friction Law", "Coulomb",
-      "Coulomb (ν p, capped by sticking), Tresca (m σ̄/√3), Orowan (min of both), Norton (α_f K |u_t|^(q-1) u_t), None",
-      Teuchos::tuple<std::string>("Coulomb", "Tresca", "Orowan", "Norton", "None"), valid.get());
+  valid->set("Type", "Contact Wall", "a frictional contact wall (docs/theory.md §2)");
+  // The choices are the registered laws (contact/friction/FrictionLaws.hpp), the first the default.
+  Teuchos::Array<std::string> names;
+  std::string doc;
+  for (const FrictionLawInfo& law : frictionLaws()) {
+    names.push_back(law.name);
+    doc += (doc.empty() ? "" : ", ") + law.description;
+  }
+  Teuchos::setStringToIntegralParameter<int>("Friction Law", names[0], doc, names(), valid.get());
   valid->set("Friction Coefficient", 0.0, "ν >= 0 (Coulomb, Orowan)", nonNegative);
   valid->set("Shear Factor", 0.0, "m in [0, 1] (Tresca, Orowan)", Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1.0)));
   valid->set("Norton Coefficient", 0.0, "α_f K >= 0 (Norton) [stress·(time/length)^q]", nonNegative);
@@ -65,17 +59,12 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
       throw InputError("Boundary Conditions/" + group + "/" + name + " must be > 0 (got " + Teuchos::toString(v) + ")");
     return v;
   };
-  const std::string law = list.get<std::string>("Friction Law");
-  m_settings.law = law == "Coulomb" ? FrictionLaw::Coulomb
-                   : law == "Tresca" ? FrictionLaw::Tresca
-                   : law == "Orowan" ? FrictionLaw::Orowan
-                   : law == "Norton" ? FrictionLaw::Norton
-                                     : FrictionLaw::None;
+  m_settings.law = frictionLawIndex(list.get<std::string>("Friction Law"));  // validated: one of them
   m_settings.frictionCoefficient = list.get<double>("Friction Coefficient");
   m_settings.shearFactor = list.get<double>("Shear Factor");
-  m_settings.nortonCoefficient = list.get<double>("Norton Coefficient");
-  m_settings.nortonExponent = positive("Norton Exponent");
-  m_settings.nortonRegularization = positive("Norton Regularization");
+  m_settings.friction.nortonCoefficient = list.get<double>("Norton Coefficient");
+  m_settings.friction.nortonExponent = positive("Norton Exponent");
+  m_settings.friction.nortonRegularization = positive("Norton Regularization");
   m_settings.normalPenalty = positive("Normal Penalty Factor");
   m_settings.tangentialPenalty = positive("Tangential Penalty Factor");
   m_settings.penaltyViscosity = list.get<double>("Penalty Viscosity");
@@ -85,10 +74,20 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   m_curve = buildBoundaryCurve(mesh, mesh.boundary(group));
   m_active.assign(m_curve.nodes.size(), m_settings.initiallyActive);
   m_changes.assign(m_curve.nodes.size(), 0);
-  m_cornerNormals.resize(m_curve.nodes.size());
   m_viscosity.assign(m_curve.nodes.size(), 1.0);
   m_flowStress.assign(m_curve.nodes.size(), 1.0);
+  refreshGeometry(mesh);
+}
+
+void ContactWall::refreshGeometry(const Mesh& mesh) {
+  // The same nodes in the same order (the mesh's topology does not change), new positions.
+  const std::vector<GO> nodes = m_curve.nodes;
+  m_curve = buildBoundaryCurve(mesh, mesh.boundary(m_curve.name));
+  if (m_curve.nodes != nodes)
+    throw std::logic_error("contact wall '" + m_curve.name + "': moving the nodes changed the order of the curve");
+  m_coords.clear();
   for (GO node : m_curve.nodes) m_coords.push_back(mesh.coords[node]);
+  m_cornerNormals.assign(m_curve.nodes.size(), {});
 }
 
 std::vector<std::array<GO, 2>> ContactWall::couplings() const {
@@ -129,6 +128,23 @@ StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::ve
     if (violation > best.violation) best = {k, !m_active[k], violation};
   }
   return atLimit.node >= 0 ? atLimit : anywhere;
+}
+
+std::vector<ContactWall> contactWallsFromCase(const Teuchos::ParameterList& bcList, const Mesh& mesh,
+                                              Geometry geometry) {
+  std::vector<ContactWall> walls;
+  for (auto it = bcList.begin(); it != bcList.end(); ++it) {
+    const std::string& name = bcList.name(it);
+    if (!bcList.isSublist(name)) continue;  // BoundaryConditions reports it
+    const Teuchos::ParameterList& group = bcList.sublist(name);
+    if (!group.isType<std::string>("Type") || group.get<std::string>("Type") != "Contact Wall") continue;
+    if (!mesh.hasBoundary(name))
+      throw InputError("Boundary Conditions/" + name + ": mesh '" + mesh.source +
+                       "' has no boundary group of that name; it has: " + mesh.boundaryNames());
+    walls.emplace_back(name, group, mesh, geometry);
+  }
+  markConvexToolCorners(walls);
+  return walls;
 }
 
 }  // namespace flowform

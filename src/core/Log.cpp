@@ -1,4 +1,4 @@
-#include "flowform/Log.hpp"
+#include "flowform/core/Log.hpp"
 
 #include <iostream>
 

@@ -1,20 +1,30 @@
-#include "flowform/DofMap.hpp"
+#include "flowform/discretization/DofMap.hpp"
 
 #include <algorithm>
 
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Assembly_Helpers.hpp>
 
-#include "flowform/Partition.hpp"
+#include "flowform/discretization/ElementLayout.hpp"
+#include "flowform/mesh/Partition.hpp"
 
 namespace flowform {
 
 namespace {
 
-/// Number of distinct nodes that share a cell with each node (itself included), over the
-/// whole mesh: the exact row length (in nodes) of the assembled matrix, also for rows that
-/// receive contributions from other ranks' cells.
-std::vector<size_t> nodeDegrees(const Mesh& mesh) {
+/// Fields of every mesh node: the most any cell's layout puts there.
+std::vector<int> nodeFields(const Mesh& mesh) {
+  const int npc = nodesPerCell(mesh.cellType);
+  std::vector<int> fields(mesh.numNodes(), 0);
+  for (GO c = 0; c < mesh.numCells(); ++c)
+    for (int a = 0; a < npc; ++a) fields[mesh.cell(c)[a]] = std::max(fields[mesh.cell(c)[a]], fieldsAtCellNode(mesh.cellType, a));
+  return fields;
+}
+
+/// Dofs of the distinct nodes that share a cell with each node (itself included), over the
+/// whole mesh: the exact length of each of the node's rows in the assembled matrix, also for
+/// rows that receive contributions from other ranks' cells.
+std::vector<size_t> rowLengths(const Mesh& mesh, const std::vector<int>& fields) {
   const int npc = nodesPerCell(mesh.cellType);
   std::vector<std::vector<GO>> neighbours(mesh.numNodes());
   for (GO c = 0; c < mesh.numCells(); ++c) {
@@ -22,14 +32,15 @@ std::vector<size_t> nodeDegrees(const Mesh& mesh) {
     for (int a = 0; a < npc; ++a)
       for (int b = 0; b < npc; ++b) neighbours[nodes[a]].push_back(nodes[b]);
   }
-  std::vector<size_t> degree(mesh.numNodes());
+  std::vector<size_t> length(mesh.numNodes(), 0);
   for (GO n = 0; n < mesh.numNodes(); ++n) {
     auto& list = neighbours[n];
     std::sort(list.begin(), list.end());
-    degree[n] = std::unique(list.begin(), list.end()) - list.begin();
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    for (GO m : list) length[n] += fields[m];
     std::vector<GO>().swap(list);
   }
-  return degree;
+  return length;
 }
 
 }  // namespace
@@ -39,7 +50,8 @@ DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm,
     : m_comm(comm) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: dof map and graph"));
   const int rank = comm->getRank();
-  const int npc = nodesPerCell(mesh.cellType);
+  const int npc = flowform::nodesPerCell(mesh.cellType);
+  m_nodesPerCell = npc;
 
   m_cellPart = partitionCells(mesh, comm->getSize());
   const std::vector<int> owner = nodeOwners(mesh, m_cellPart);
@@ -69,43 +81,52 @@ DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm,
   for (GO c : m_cells)
     for (int a = 0; a < npc; ++a) m_cellNodes.push_back(m_overlapIndexOfNode[mesh.cell(c)[a]]);
 
-  // Dof maps.
-  std::vector<GO> dofs(kDofsPerNode * m_overlapNodes.size());
-  for (size_t i = 0; i < m_overlapNodes.size(); ++i)
-    for (int c = 0; c < kDofsPerNode; ++c) dofs[kDofsPerNode * i + c] = kDofsPerNode * m_overlapNodes[i] + c;
+  // Dof numbering: each node's fields contiguous, nodes in id order.
+  const std::vector<int> fields = nodeFields(mesh);
+  m_globalOffset.assign(mesh.numNodes() + 1, 0);
+  for (GO n = 0; n < mesh.numNodes(); ++n) m_globalOffset[n + 1] = m_globalOffset[n] + fields[n];
+  m_localOffset.assign(m_overlapNodes.size() + 1, 0);
+  std::vector<GO> dofs;
+  for (size_t i = 0; i < m_overlapNodes.size(); ++i) {
+    const GO node = m_overlapNodes[i];
+    m_localOffset[i + 1] = m_localOffset[i] + fields[node];
+    for (int f = 0; f < fields[node]; ++f) dofs.push_back(globalDof(node, f));
+  }
+  const LO numOwnedDofs = m_localOffset[m_numOwnedNodes];
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  m_ownedMap = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(dofs.data(), kDofsPerNode * m_numOwnedNodes), 0, comm));
+  m_ownedMap = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(dofs.data(), numOwnedDofs), 0, comm));
   m_overlapMap = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(dofs.data(), dofs.size()), 0, comm));
   m_importer = Teuchos::rcp(new Import(m_ownedMap, m_overlapMap));
   m_exporter = Teuchos::rcp(new Export(m_overlapMap, m_ownedMap));
 
   // Graph: every dof of a node couples to every dof of every node sharing a cell with it.
-  const std::vector<size_t> degree = nodeDegrees(mesh);
-  Kokkos::DualView<size_t*, FECrsGraph::device_type> rowLengths("flowform row lengths", dofs.size());
-  rowLengths.modify_host();
+  const std::vector<size_t> length = rowLengths(mesh, fields);
+  Kokkos::DualView<size_t*, FECrsGraph::device_type> lengths("flowform row lengths", dofs.size());
+  lengths.modify_host();
   for (size_t i = 0; i < m_overlapNodes.size(); ++i)
-    for (int c = 0; c < kDofsPerNode; ++c)
-      rowLengths.h_view(kDofsPerNode * i + c) = kDofsPerNode * degree[m_overlapNodes[i]];
-  rowLengths.sync_device();
-  Kokkos::DualView<const size_t*, FECrsGraph::device_type> constLengths = rowLengths;
+    for (LO d = m_localOffset[i]; d < m_localOffset[i + 1]; ++d) lengths.h_view(d) = length[m_overlapNodes[i]];
+  lengths.sync_device();
+  Kokkos::DualView<const size_t*, FECrsGraph::device_type> constLengths = lengths;
   m_graph = Teuchos::rcp(new FECrsGraph(m_ownedMap, m_overlapMap, constLengths));
 
   Tpetra::beginAssembly(*m_graph);
-  std::vector<GO> cellDofs(kDofsPerNode * npc);
+  std::vector<GO> cellDofs;
   for (size_t k = 0; k < m_cells.size(); ++k) {
-    for (int a = 0; a < npc; ++a)
-      for (int c = 0; c < kDofsPerNode; ++c)
-        cellDofs[kDofsPerNode * a + c] = kDofsPerNode * m_overlapNodes[m_cellNodes[npc * k + a]] + c;
+    cellDofs.clear();
+    for (int a = 0; a < npc; ++a) {
+      const GO node = m_overlapNodes[cellNodes(k)[a]];
+      for (int f = 0; f < fields[node]; ++f) cellDofs.push_back(globalDof(node, f));
+    }
     for (GO row : cellDofs) m_graph->insertGlobalIndices(row, Teuchos::ArrayView<const GO>(cellDofs));
   }
   for (const auto& pair : couplings)
     for (int k = 0; k < 2; ++k) {
       const GO i = pair[k], j = pair[1 - k];
       if (owner[i] != rank) continue;
-      GO cols[kDofsPerNode];
-      for (int c = 0; c < kDofsPerNode; ++c) cols[c] = kDofsPerNode * j + c;
-      for (int c = 0; c < kDofsPerNode; ++c)
-        m_graph->insertGlobalIndices(kDofsPerNode * i + c, Teuchos::ArrayView<const GO>(cols, kDofsPerNode));
+      std::vector<GO> cols;
+      for (int f = 0; f < fields[j]; ++f) cols.push_back(globalDof(j, f));
+      for (int f = 0; f < fields[i]; ++f)
+        m_graph->insertGlobalIndices(globalDof(i, f), Teuchos::ArrayView<const GO>(cols));
     }
   Tpetra::endAssembly(*m_graph);
 
@@ -115,6 +136,11 @@ DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm,
   m_columnOfOverlapDof.resize(dofs.size());
   for (size_t i = 0; i < dofs.size(); ++i) m_columnOfOverlapDof[i] = colMap->getLocalElement(dofs[i]);
   m_graph->switchActiveCrsGraph();  // back to owned
+}
+
+GO DofMap::nodeOfGlobalDof(GO dof) const {
+  // The last node whose first dof is <= dof.
+  return static_cast<GO>(std::upper_bound(m_globalOffset.begin(), m_globalOffset.end(), dof) - m_globalOffset.begin()) - 1;
 }
 
 }  // namespace flowform

@@ -1,10 +1,10 @@
-#include "flowform/CaseOverrides.hpp"
+#include "flowform/drivers/CaseOverrides.hpp"
 
 #include <sstream>
 #include <vector>
 
-#include "flowform/InputError.hpp"
-#include "flowform/Strings.hpp"
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/Strings.hpp"
 
 namespace flowform {
 

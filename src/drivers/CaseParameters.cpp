@@ -1,15 +1,15 @@
-#include "flowform/CaseParameters.hpp"
+#include "flowform/drivers/CaseParameters.hpp"
 
 #include <sstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "flowform/BoundaryConditions.hpp"
-#include "flowform/InputError.hpp"
-#include "flowform/MeshReader.hpp"
-#include "flowform/NonlinearSolver.hpp"
-#include "flowform/Responses.hpp"
-#include "flowform/Sensitivity.hpp"
+#include "flowform/bc/BoundaryConditions.hpp"
+#include "flowform/core/InputError.hpp"
+#include "flowform/mesh/MeshReader.hpp"
+#include "flowform/solvers/NonlinearSolver.hpp"
+#include "flowform/assembly/Responses.hpp"
+#include "flowform/sensitivity/Sensitivity.hpp"
 #include "flowform/contact/ContactWall.hpp"
 
 namespace flowform {
@@ -78,7 +78,7 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   problem.set("Body Force X", 0.0, "f_x, force per unit volume");
   problem.set("Body Force Y", 0.0, "f_y, force per unit volume");
 
-  ParameterList& material = valid->sublist("Material", false, "rigid-viscoplastic law (SPEC §1)");
+  ParameterList& material = valid->sublist("Material", false, "rigid-viscoplastic law (docs/theory.md §1)");
   material.set("Yield Stress", 1.0, "σ0 >= 0 [stress]", nonNegative);
   material.set("Rate Constant", 1.0, "γ > 0 [1/time]");
   material.set("Rate Exponent", 1.0, "n > 0: σ̄ = σ0 + (e/γ)^(1/n)");
@@ -103,10 +103,10 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   output.set("Boundary CSV", true, "one CSV per named boundary group");
   output.set("Cell Fields", Teuchos::Array<std::string>({"strain_rate", "equivalent_stress", "viscosity"}),
              "cell fields to write: any of strain_rate, equivalent_stress, viscosity");
-  valid->sublist("Responses", false, "functionals by name (include/flowform/Responses.hpp)")
+  valid->sublist("Responses", false, "functionals by name (include/flowform/assembly/Responses.hpp)")
       .sublist("<response name>", false, "one functional")
       .setParameters(*Responses::validParameters());
-  ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (SPEC §2)");
+  ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (docs/theory.md §2)");
   contact.set("Max Status Changes", 500, "give up (not converged) after this many changes",
               Teuchos::rcp(new EnhancedNumberValidator<int>(0, 1000000)));
   contact.set("Max Changes Per Node", 4,
@@ -116,7 +116,7 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   contact.set("Pressure Tolerance", 1e-3, "an active node is released when p < -this [stress]", nonNegative);
   contact.set("Penetration Tolerance", 1e-4, "a free node is activated when u·n > this [velocity]", nonNegative);
   valid->set("Sensitivity", *Sensitivity::validParameters(),
-             "sensitivities by direct differentiation and their finite-difference check (SPEC §4)");
+             "sensitivities by direct differentiation and their finite-difference check (docs/theory.md §4)");
   valid->sublist("Regression", false, "expected values for a regression checker");
   return valid;
 }
@@ -148,6 +148,20 @@ void validateCase(ParameterList& params) {
   // Only a case with a Sensitivity sublist gets one (with defaults): none means no work.
   if (params.isSublist("Sensitivity"))
     validateSublist(params.sublist("Sensitivity"), valid.sublist("Sensitivity"), "Sensitivity");
+}
+
+FlowPhysics physicsFromCase(const ParameterList& params) {
+  FlowPhysics physics;
+  const ParameterList& mat = params.sublist("Material");
+  physics.material = {mat.get<double>("Yield Stress"), mat.get<double>("Rate Constant"),
+                      mat.get<double>("Rate Exponent"), mat.get<double>("Strain Rate Cutoff")};
+  const ParameterList& problem = params.sublist("Problem");
+  physics.kernel.geometry =
+      problem.get<std::string>("Geometry") == "Axisymmetric" ? Geometry::Axisymmetric : Geometry::PlaneStrain;
+  physics.kernel.bodyForce[0] = problem.get<double>("Body Force X");
+  physics.kernel.bodyForce[1] = problem.get<double>("Body Force Y");
+  physics.kernel.beta = params.sublist("Stabilization").get<double>("Beta");
+  return physics;
 }
 
 }  // namespace flowform

@@ -1,23 +1,23 @@
-#include "flowform/Simulation.hpp"
+#include "flowform/drivers/Simulation.hpp"
 
 #include <chrono>
-#include <cmath>
 #include <filesystem>
-#include <sstream>
 
-#include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <nlohmann/json.hpp>
 
-#include "flowform/BoundaryCurve.hpp"
-#include "flowform/CaseParameters.hpp"
-#include "flowform/InputError.hpp"
-#include "flowform/Log.hpp"
-#include "flowform/MeshReader.hpp"
 #include "flowform/contact/ToolCorners.hpp"
+#include "flowform/contact/WallStates.hpp"
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/drivers/CaseParameters.hpp"
+#include "flowform/drivers/OutputFields.hpp"
 #include "flowform/io/BoundaryCsvWriter.hpp"
 #include "flowform/io/JsonSummary.hpp"
 #include "flowform/io/XdmfWriter.hpp"
+#include "flowform/mesh/BoundaryCurve.hpp"
+#include "flowform/mesh/MeshReader.hpp"
+#include "flowform/solvers/LinearSolverRegistry.hpp"
 
 namespace flowform {
 
@@ -43,15 +43,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
     : m_params(caseParams), m_comm(comm) {
   const auto start = std::chrono::steady_clock::now();
   validateCase(m_params);
-  const ParameterList& mat = m_params.sublist("Material");
-  m_physics.material = {mat.get<double>("Yield Stress"), mat.get<double>("Rate Constant"),
-                        mat.get<double>("Rate Exponent"), mat.get<double>("Strain Rate Cutoff")};
-  const ParameterList& problem = m_params.sublist("Problem");
-  m_physics.kernel.geometry =
-      problem.get<std::string>("Geometry") == "Axisymmetric" ? Geometry::Axisymmetric : Geometry::PlaneStrain;
-  m_physics.kernel.bodyForce[0] = problem.get<double>("Body Force X");
-  m_physics.kernel.bodyForce[1] = problem.get<double>("Body Force Y");
-  m_physics.kernel.beta = m_params.sublist("Stabilization").get<double>("Beta");
+  m_physics = physicsFromCase(m_params);
 
   m_mesh = readMesh(m_params.sublist("Mesh"), baseDir, *comm);
   if (m_physics.kernel.geometry == Geometry::Axisymmetric)
@@ -62,20 +54,12 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
 
   // Contact walls first: the friction law couples wall neighbours, which the DofMap must know.
   const ParameterList& bcList = m_params.sublist("Boundary Conditions");
+  m_walls = contactWallsFromCase(bcList, m_mesh, m_physics.kernel.geometry);
   std::vector<std::array<GO, 2>> couplings;
-  for (auto it = bcList.begin(); it != bcList.end(); ++it) {
-    const std::string& name = bcList.name(it);
-    if (!bcList.isSublist(name)) continue;  // BoundaryConditions reports it
-    const ParameterList& group = bcList.sublist(name);
-    if (!group.isType<std::string>("Type") || group.get<std::string>("Type") != "Contact Wall") continue;
-    if (!m_mesh.hasBoundary(name))
-      throw InputError("Boundary Conditions/" + name + ": mesh '" + m_mesh.source +
-                       "' has no boundary group of that name; it has: " + m_mesh.boundaryNames());
-    m_walls.emplace_back(name, group, m_mesh, m_physics.kernel.geometry);
-    const auto pairs = m_walls.back().couplings();
+  for (const ContactWall& wall : m_walls) {
+    const auto pairs = wall.couplings();
     couplings.insert(couplings.end(), pairs.begin(), pairs.end());
   }
-  markConvexToolCorners(m_walls);
   m_responses = std::make_unique<Responses>(m_params.sublist("Responses"), m_mesh);
   // Only a case with a Sensitivity sublist gets one: none means no work.
   m_sensitivity = std::make_unique<Sensitivity>(
@@ -86,8 +70,8 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
   m_assembler->setPhysics(m_physics);
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
-  m_model = std::make_unique<FlowModel>(*m_assembler, Teuchos::getIntegralValue<LinearSolver::Ordering>(
-                                                          m_params.sublist("Solver").sublist("Linear Solver"), "Ordering"));
+  m_model = std::make_unique<FlowModel>(
+      *m_assembler, createLinearSolver(m_params.sublist("Solver").sublist("Linear Solver"), *comm));
   m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
@@ -96,16 +80,19 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
 
 Simulation::~Simulation() = default;
 
+NonlinearSolver Simulation::newtonSolver(bool refreshScales) {
+  NonlinearSolver solver(*m_model, m_params.sublist("Solver"));
+  if (refreshScales && !m_walls.empty()) solver.setBeforeNewton([this](const Vector& x) { updateWallScales(x); });
+  return solver;
+}
+
 const SolveReport& Simulation::run() {
   const auto start = std::chrono::steady_clock::now();
   log() << "flowform: " << m_mesh.numNodes() << " nodes, " << m_mesh.numCells() << " "
         << cellTypeName(m_mesh.cellType) << " cells, " << m_dofMap->ownedMap()->getGlobalNumElements()
         << " dofs, " << m_comm->getSize() << " rank(s)\n";
-  NonlinearSolver solver(*m_model, m_params.sublist("Solver"));
-  if (!m_walls.empty()) {
-    updateWallScales(*m_solution);
-    solver.setBeforeNewton([this](const Vector& x) { updateWallScales(x); });
-  }
+  NonlinearSolver solver = newtonSolver(true);
+  if (!m_walls.empty()) updateWallScales(*m_solution);
   m_report = solver.solve(*m_solution, m_physics);
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
@@ -119,6 +106,15 @@ const SolveReport& Simulation::run() {
     log() << "flowform: NOT CONVERGED: " << m_report.message << "\n";
   if (m_report.converged && m_sensitivity->requested()) runSensitivity();
   return m_report;
+}
+
+void Simulation::moveNodes(const std::vector<std::array<double, 2>>& coords) {
+  m_mesh.setCoordinates(coords);
+  for (ContactWall& wall : m_walls) wall.refreshGeometry(m_mesh);
+  markConvexToolCorners(m_walls);
+  m_bcs->refreshGeometry(m_mesh);
+  m_bcs->imposeOnSolution(*m_solution);  // symmetry directions may have turned
+  m_model->invalidateJacobian();
 }
 
 int Simulation::exitStatus() const {
@@ -136,24 +132,23 @@ void Simulation::runSensitivity() {
     base.converged = true;
     base.x = m_solution;
     base.functionals = m_functionals;
-    base.states = m_statusLoop->states(m_walls, *m_solution);
+    base.states = wallStates(m_walls, *m_dofMap, *m_solution);
     m_fdCheck = std::make_unique<FiniteDifferenceCheck>(
-        *m_sensitivity, base, m_physics, m_walls, m_mesh,
+        *m_sensitivity, base, m_physics, m_walls, m_mesh, *m_dofMap,
         [this](const SensitivityParameter& h, double delta) { return solvePerturbed(h, delta); });
   }
   m_sensitivitySeconds = secondsSince(start);
 }
 
 PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double delta) {
-  const std::vector<ContactWall> saved = m_walls;
+  std::vector<ContactWall::State> saved;
+  for (const ContactWall& wall : m_walls) saved.push_back(wall.state());
   FlowPhysics physics = m_physics;
   shiftParameter(h, delta, physics, m_walls);
   for (ContactWall& wall : m_walls) wall.resetChangeCounts();
   // Held scales (the default) keep the walls' μ_k and σ̄_k of the base run, the problem the
   // DDM differentiates; Recomputed takes them from the start state at h ± δ, as a solve does.
-  NonlinearSolver solver(*m_model, m_params.sublist("Solver"));
-  if (!m_walls.empty() && !m_sensitivity->holdScalesInCheck())
-    solver.setBeforeNewton([this](const Vector& x) { updateWallScales(x); });
+  NonlinearSolver solver = newtonSolver(!m_sensitivity->holdScalesInCheck());
   auto x = Teuchos::rcp(new Vector(*m_solution, Teuchos::Copy));
   PerturbedRun run;
   SolveReport report = solver.resolve(*x, physics);
@@ -164,9 +159,9 @@ PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double de
   run.x = x;
   if (run.converged) {
     run.functionals = m_responses->evaluate(*x, m_mesh, *m_dofMap, *m_assembler, m_walls);
-    run.states = m_statusLoop->states(m_walls, *x);
+    run.states = wallStates(m_walls, *m_dofMap, *x);
   }
-  m_walls = saved;
+  for (size_t w = 0; w < m_walls.size(); ++w) m_walls[w].restore(saved[w]);
   m_model->setPhysics(m_physics);
   return run;
 }
@@ -189,106 +184,8 @@ void Simulation::updateWallScales(const Vector& x) {
 }
 
 FieldSet Simulation::gatherFields() const {
-  const GO numNodes = m_mesh.numNodes(), numCells = m_mesh.numCells();
-  const bool root = m_comm->getRank() == 0;
-
-  // Nodal dofs to rank 0.
-  auto rootDofs = Teuchos::rcp(new Map(kDofsPerNode * numNodes, root ? kDofsPerNode * numNodes : 0, 0, m_comm));
-  Vector allDofs(rootDofs);
-  allDofs.doImport(*m_solution, Import(m_dofMap->ownedMap(), rootDofs), Tpetra::INSERT);
-  // Sensitivity fields only when sensitivities were asked for and computed.
-  Teuchos::RCP<MultiVector> sensitivityDofs, differenceDofs;
-  if (m_sensitivity->computed()) {
-    const MultiVector& dqdh = m_sensitivity->solutionDerivatives();
-    sensitivityDofs = Teuchos::rcp(new MultiVector(rootDofs, dqdh.getNumVectors()));
-    sensitivityDofs->doImport(dqdh, Import(m_dofMap->ownedMap(), rootDofs), Tpetra::INSERT);
-  }
-  if (m_fdCheck) {
-    const MultiVector& fd = m_fdCheck->solutionDifferences();
-    differenceDofs = Teuchos::rcp(new MultiVector(rootDofs, fd.getNumVectors()));
-    differenceDofs->doImport(fd, Import(m_dofMap->ownedMap(), rootDofs), Tpetra::INSERT);
-  }
-
-  // Cell values at the centroid, computed where the cell is assembled, then to rank 0:
-  // e = sqrt(2/3 D:D), μ(e_r), σ_eq = sqrt(3/2 s:s) = 3 μ e.
-  const auto& cells = m_dofMap->cells();
-  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  auto ownedCells = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(cells), 0, m_comm));
-  auto rootCells = Teuchos::rcp(new Map(numCells, root ? numCells : 0, 0, m_comm));
-  MultiVector cellValues(ownedCells, 3), allCells(rootCells, 3);
-  {
-    Vector xOverlap(m_dofMap->overlapMap());
-    xOverlap.doImport(*m_solution, *m_dofMap->importer(), Tpetra::INSERT);
-    auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-    auto v = cellValues.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    const int npc = nodesPerCell(m_mesh.cellType);
-    double dofs[kDofsPerNode * kMaxNodesPerCell];
-    std::array<double, 2> xy[kMaxNodesPerCell];
-    CellQuadrature centroid;
-    for (size_t k = 0; k < cells.size(); ++k) {
-      const LO* nodes = &m_dofMap->cellNodes()[npc * k];
-      for (int a = 0; a < npc; ++a) {
-        xy[a] = m_mesh.coords[m_dofMap->overlapNodes()[nodes[a]]];
-        for (int c = 0; c < kDofsPerNode; ++c) dofs[kDofsPerNode * a + c] = x(kDofsPerNode * nodes[a] + c, 0);
-      }
-      computeCellQuadrature(m_mesh.cellType, xy, 1, centroid);
-      const auto d = strainRateAt(centroid, 0, m_physics.kernel.geometry, dofs);
-      const double e = std::sqrt(2.0 / 3.0 * d.ddot());
-      const double mu = viscosity(regularizedStrainRate(d.ddot(), m_physics.material), m_physics.material);
-      v(k, 0) = e;
-      v(k, 1) = 3.0 * mu * e;
-      v(k, 2) = mu;
-    }
-  }
-  allCells.doImport(cellValues, Import(ownedCells, rootCells), Tpetra::INSERT);
-
-  FieldSet fields;
-  if (!root) return fields;
-  auto d = allDofs.getLocalViewHost(Tpetra::Access::ReadOnly);
-  Field velocity{"velocity", 2, std::vector<double>(2 * numNodes)};
-  Field pressure{"pressure", 1, std::vector<double>(numNodes)};
-  for (GO n = 0; n < numNodes; ++n) {
-    velocity.values[2 * n] = d(kDofsPerNode * n + kUx, 0);
-    velocity.values[2 * n + 1] = d(kDofsPerNode * n + kUy, 0);
-    pressure.values[n] = d(kDofsPerNode * n + kP, 0);
-  }
-  fields.nodal = {velocity, pressure};
-  if (!m_walls.empty()) {
-    // 1 active, 0 free, -1 not on a contact wall
-    Field status{"contact_status", 1, std::vector<double>(numNodes, -1.0)};
-    for (const ContactWall& wall : m_walls)
-      for (int k = 0; k < wall.numNodes(); ++k) status.values[wall.curve().nodes[k]] = wall.isActive(k) ? 1.0 : 0.0;
-    fields.nodal.push_back(std::move(status));
-  }
-  // du/dh (also as du_t/dh, du_n/dh in the boundary CSVs) and dp/dh per parameter, by DDM
-  // and, when the check ran, by central differences (suffix _fd).
-  for (const auto& [dofs, suffix] : {std::make_pair(sensitivityDofs, ""), std::make_pair(differenceDofs, "_fd")}) {
-    if (!dofs) continue;
-    auto ds = dofs->getLocalViewHost(Tpetra::Access::ReadOnly);
-    const auto& parameters = m_sensitivity->parameters();
-    for (size_t j = 0; j < parameters.size(); ++j) {
-      const std::string h = parameters[j].symbol + suffix;
-      Field du{"du_d" + h, 2, std::vector<double>(2 * numNodes), "du_t_d" + h, "du_n_d" + h};
-      Field dp{"dp_d" + h, 1, std::vector<double>(numNodes)};
-      for (GO n = 0; n < numNodes; ++n) {
-        du.values[2 * n] = ds(kDofsPerNode * n + kUx, j);
-        du.values[2 * n + 1] = ds(kDofsPerNode * n + kUy, j);
-        dp.values[n] = ds(kDofsPerNode * n + kP, j);
-      }
-      fields.nodal.push_back(std::move(du));
-      fields.nodal.push_back(std::move(dp));
-    }
-  }
-  auto c = allCells.getLocalViewHost(Tpetra::Access::ReadOnly);
-  const char* names[3] = {"strain_rate", "equivalent_stress", "viscosity"};
-  for (const auto& wanted : m_params.sublist("Output").get<Teuchos::Array<std::string>>("Cell Fields"))
-    for (int j = 0; j < 3; ++j)
-      if (wanted == names[j]) {
-        Field f{names[j], 1, std::vector<double>(numCells)};
-        for (GO k = 0; k < numCells; ++k) f.values[k] = c(k, j);
-        fields.cell.push_back(std::move(f));
-      }
-  return fields;
+  return gatherOutputFields(*m_assembler, *m_solution, m_walls, *m_sensitivity, m_fdCheck.get(),
+                            m_params.sublist("Output").get<Teuchos::Array<std::string>>("Cell Fields"));
 }
 
 void Simulation::writeOutput(const std::string& outDir) const {
@@ -308,28 +205,19 @@ void Simulation::writeOutput(const std::string& outDir) const {
       }
     }
 
+  // Each piece reports its own part.
   nlohmann::json summary;
-  summary["converged"] = m_report.converged;
+  m_report.report(summary);  // converged, message, newton_iterations, stages, ...
   summary["exit_status"] = exitStatus();
-  summary["message"] = m_report.message;
-  summary["newton_iterations"] = m_report.newtonIterations;
-  summary["linear_problem"] = m_report.linear;
-  summary["continuation_stages"] = m_report.continuationStages;
-  summary["residual_norm"] = m_report.residualNorm;
   summary["contact_changes"] = m_contactChanges;
   summary["free_surface_iterations"] = 0;  // no free surfaces in this case
   summary["dofs"] = m_dofMap->ownedMap()->getGlobalNumElements();
   summary["mesh"] = {{"file", m_mesh.source}, {"nodes", m_mesh.numNodes()}, {"cells", m_mesh.numCells()},
                      {"cell_type", cellTypeName(m_mesh.cellType)}};
   summary["ranks"] = m_comm->getSize();
-  summary["linear_solver"] = {{"factorizations", m_model->linearSolver().numFactorizations()},
-                              {"solves", m_model->linearSolver().numSolves()},
-                              {"residuals", m_model->numResiduals()},
-                              {"jacobians", m_model->numJacobians()},
-                              {"ordering", LinearSolver::orderingName(m_model->linearSolver().ordering())}};
-  // Fill of the last factorization (rank 0 holds it), where the solver reports it.
-  if (m_model->linearSolver().factorEntries() > 0.0)
-    summary["linear_solver"]["factor_entries"] = m_model->linearSolver().factorEntries();
+  m_model->linearSolver().report(summary["linear_solver"]);
+  summary["linear_solver"]["residuals"] = m_model->numResiduals();
+  summary["linear_solver"]["jacobians"] = m_model->numJacobians();
   const double assemblyResidual = timerSeconds("flowform: assembly (residual)");
   const double assemblyJacobian = timerSeconds("flowform: assembly (Jacobian)");
   summary["timings"] = {{"total", m_setupSeconds + m_solveSeconds + m_sensitivitySeconds + secondsSince(start)},
@@ -344,12 +232,6 @@ void Simulation::writeOutput(const std::string& outDir) const {
                         {"sensitivity_ddm", timerSeconds("flowform: sensitivity")},
                         {"finite_difference_check", timerSeconds("flowform: finite-difference check")},
                         {"output", secondsSince(start)}};
-  nlohmann::json stages = nlohmann::json::array();
-  for (const auto& s : m_report.stages)
-    stages.push_back({{"rate_exponent", s.rateExponent}, {"cutoff", s.cutoff},
-                      {"newton_iterations", s.newtonIterations}, {"converged", s.converged},
-                      {"residual_norm", s.residualNorm}});
-  summary["stages"] = stages;
   summary["functionals"] = nlohmann::json::object();
   for (const auto& [name, value] : m_functionals) summary["functionals"][name] = value;
   summary["fd_check"] = nlohmann::json::object();

@@ -1,4 +1,4 @@
-// JSON output helpers for summary.json (SPEC §5: the full parameter list goes in it).
+// JSON output helpers for summary.json (docs/theory.md §5: the full parameter list goes in it).
 #include "flowform/io/JsonSummary.hpp"
 
 #include "flowform/io/AtomicFile.hpp"

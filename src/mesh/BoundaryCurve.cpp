@@ -7,14 +7,14 @@
 // tangent t is n = (t_y, -t_x). This is exact for any cell shape, where a test against the
 // cell centroid can fail for very flat cells; and it makes the ordering a walk along
 // directed edges, in which a node with two outgoing (or two incoming) edges is a branch.
-#include "flowform/BoundaryCurve.hpp"
+#include "flowform/mesh/BoundaryCurve.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
 
-#include "flowform/InputError.hpp"
+#include "flowform/core/InputError.hpp"
 
 namespace flowform {
 

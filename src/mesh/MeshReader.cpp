@@ -2,7 +2,7 @@
 // and is not MPI-aware); the finished Mesh, or the error text, is packed into one byte
 // buffer and broadcast, so every rank returns the same mesh or throws the same error and
 // no rank is left waiting in a collective when rank 0 fails.
-#include "flowform/MeshReader.hpp"
+#include "flowform/mesh/MeshReader.hpp"
 
 #include <gmsh.h>
 
@@ -18,7 +18,7 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "flowform/InputError.hpp"
+#include "flowform/core/InputError.hpp"
 
 namespace flowform {
 

@@ -5,7 +5,7 @@
 // built here (cells are neighbours when they share an edge, i.e. METIS_PartMeshDual's
 // ncommon = 2) to keep the edge-sharing rule explicit and to work for triangles and
 // quadrilaterals alike.
-#include "flowform/Partition.hpp"
+#include "flowform/mesh/Partition.hpp"
 
 #include <metis.h>
 
@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "flowform/InputError.hpp"
+#include "flowform/core/InputError.hpp"
 
 namespace flowform {
 

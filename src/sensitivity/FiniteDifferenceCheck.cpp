@@ -1,4 +1,4 @@
-#include "flowform/FiniteDifferenceCheck.hpp"
+#include "flowform/sensitivity/FiniteDifferenceCheck.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 #include <nlohmann/json.hpp>
 
-#include "flowform/Log.hpp"
+#include "flowform/core/Log.hpp"
 
 namespace flowform {
 
@@ -21,8 +21,8 @@ double relativeDifference(double diff, double a, double b) {
 
 /// Max norms over the velocity (component 0, 1) or pressure (2) dofs of: the DDM field, the
 /// central, forward and backward differences, and their differences from the DDM field.
-void fieldNorms(const Vector& ddm, const Vector& plus, const Vector& minus, const Vector& base, double delta,
-                bool velocity, double* norms /* [7] */) {
+void fieldNorms(const DofMap& dofMap, const Vector& ddm, const Vector& plus, const Vector& minus, const Vector& base,
+                double delta, bool velocity, double* norms /* [7] */) {
   auto d = ddm.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto p = plus.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto m = minus.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -30,7 +30,7 @@ void fieldNorms(const Vector& ddm, const Vector& plus, const Vector& minus, cons
   const Map& map = *ddm.getMap();
   double local[7] = {0, 0, 0, 0, 0, 0, 0};
   for (size_t i = 0; i < ddm.getLocalLength(); ++i) {
-    const bool isPressure = map.getGlobalElement(static_cast<LO>(i)) % kDofsPerNode == kP;
+    const bool isPressure = dofMap.fieldOfGlobalDof(map.getGlobalElement(static_cast<LO>(i))) == kP;
     if (isPressure == velocity) continue;
     const double central = (p(i, 0) - m(i, 0)) / (2 * delta);
     const double forward = (p(i, 0) - b(i, 0)) / delta, backward = (b(i, 0) - m(i, 0)) / delta;
@@ -45,7 +45,7 @@ void fieldNorms(const Vector& ddm, const Vector& plus, const Vector& minus, cons
 
 FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, const PerturbedRun& base,
                                              const FlowPhysics& physics, const std::vector<ContactWall>& walls,
-                                             const Mesh& mesh, const Runner& run) {
+                                             const Mesh& mesh, const DofMap& dofMap, const Runner& run) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: finite-difference check"));
   const auto& parameters = sensitivity.parameters();
   for (const auto& [response, value] : base.functionals)
@@ -108,7 +108,7 @@ FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, con
     const Vector ddmField = *sensitivity.solutionDerivatives().getVector(j);
     for (bool velocity : {true, false}) {
       double n[7];
-      fieldNorms(ddmField, *plus.x, *minus.x, *base.x, pr.delta, velocity, n);
+      fieldNorms(dofMap, ddmField, *plus.x, *minus.x, *base.x, pr.delta, velocity, n);
       Entry e{n[0], n[1], n[2], n[3], n[4], n[5], n[6]};
       const std::string name = velocity ? "velocity_field" : "pressure_field";
       m_entries[name][h.name] = e;

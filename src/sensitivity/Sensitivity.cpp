@@ -1,4 +1,4 @@
-#include "flowform/Sensitivity.hpp"
+#include "flowform/sensitivity/Sensitivity.hpp"
 
 #include <cmath>
 #include <set>
@@ -7,9 +7,9 @@
 #include <Teuchos_TimeMonitor.hpp>
 #include <nlohmann/json.hpp>
 
-#include "flowform/InputError.hpp"
-#include "flowform/Log.hpp"
-#include "flowform/Strings.hpp"
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/core/Strings.hpp"
 
 namespace flowform {
 

@@ -1,10 +1,10 @@
-#include "flowform/FlowGroup.hpp"
+#include "flowform/solvers/FlowGroup.hpp"
 
 #include <cmath>
 
 #include <Thyra_TpetraThyraWrappers.hpp>
 
-#include "flowform/Log.hpp"
+#include "flowform/core/Log.hpp"
 
 namespace flowform {
 

@@ -1,4 +1,4 @@
-#include "flowform/KluNestedDissection.hpp"
+#include "flowform/solvers/Klu2NestedDissection.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,7 +57,7 @@ std::vector<KluInt> nestedDissection(const std::vector<KluInt>& rowStart, const 
 
 }  // namespace
 
-struct KluNestedDissection::Impl {
+struct Klu2NestedDissection::Impl {
   KluCommon common;
   KluSymbolic* symbolic = nullptr;
   KluNumeric* numeric = nullptr;
@@ -74,17 +74,18 @@ struct KluNestedDissection::Impl {
   }
 };
 
-KluNestedDissection::KluNestedDissection() : m_impl(new Impl) {}
-KluNestedDissection::~KluNestedDissection() = default;
+Klu2NestedDissection::Klu2NestedDissection() : m_impl(new Impl) {}
+Klu2NestedDissection::~Klu2NestedDissection() = default;
 
-void KluNestedDissection::factor(const CrsMatrix& A) {
+void Klu2NestedDissection::doFactor(const Teuchos::RCP<const CrsMatrix>& matrix) {
   Impl& d = *m_impl;
+  const CrsMatrix& A = *matrix;
   const auto rowMap = A.getRowMap();
   const auto colMap = A.getColMap();
   const auto local = A.getLocalMatrixHost();
   const KluInt n = static_cast<KluInt>(rowMap->getNodeNumElements());
   if (A.getGlobalNumRows() != static_cast<Tpetra::global_size_t>(n))
-    throw std::logic_error("KluNestedDissection: the matrix is not all on this process");
+    throw std::logic_error("Klu2NestedDissection: the matrix is not all on this process");
 
   // Column indices as row indices (the column map may order the columns differently).
   std::vector<KluInt> rowStart(n + 1), cols(local.graph.entries.extent(0));
@@ -118,20 +119,22 @@ void KluNestedDissection::factor(const CrsMatrix& A) {
   }
 }
 
-void KluNestedDissection::solve(const MultiVector& b, MultiVector& x) const {
+void Klu2NestedDissection::doSolve(const MultiVector& b, MultiVector& x, bool transpose) {
   Impl& d = *m_impl;
-  if (d.numeric == nullptr) throw std::logic_error("KluNestedDissection::solve before a successful factor()");
+  if (d.numeric == nullptr) throw std::logic_error("Klu2NestedDissection::solve before a successful factor()");
   Tpetra::deep_copy(x, b);
   const KluInt n = static_cast<KluInt>(x.getLocalLength());
   for (size_t j = 0; j < x.getNumVectors(); ++j) {
     auto column = x.getDataNonConst(j);
-    // Aᵀ is factored, so the transposed solve gives A x = b.
-    if (!KLU2::klu_tsolve<double, KluInt>(d.symbolic, d.numeric, n, 1, column.getRawPtr(), &d.common))
+    // Aᵀ is factored, so KLU2's transposed solve gives A x = b and its plain one Aᵀ x = b.
+    const bool ok = transpose ? KLU2::klu_solve<double, KluInt>(d.symbolic, d.numeric, n, 1, column.getRawPtr(), &d.common)
+                              : KLU2::klu_tsolve<double, KluInt>(d.symbolic, d.numeric, n, 1, column.getRawPtr(), &d.common);
+    if (!ok)
       throw std::runtime_error("KLU2 solve failed (status " + std::to_string(d.common.status) + ")");
   }
 }
 
-double KluNestedDissection::factorEntries() const {
+double Klu2NestedDissection::factorEntries() const {
   const Impl& d = *m_impl;
   return d.numeric ? static_cast<double>(d.numeric->lnz) + static_cast<double>(d.numeric->unz) : 0.0;
 }

@@ -1,4 +1,4 @@
-#include "flowform/NonlinearSolver.hpp"
+#include "flowform/solvers/NonlinearSolver.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -9,9 +9,11 @@
 #include <NOX_Solver_LineSearchBased.H>
 #include <NOX_StatusTest_Generic.H>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <nlohmann/json.hpp>
 
-#include "flowform/FlowGroup.hpp"
-#include "flowform/Log.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/solvers/FlowGroup.hpp"
+#include "flowform/solvers/LinearSolverRegistry.hpp"
 
 namespace flowform {
 
@@ -79,7 +81,7 @@ class NewtonLogger : public NOX::Observer {
   explicit NewtonLogger(const ResidualAndStepTest& test) : m_test(test) {}
   void runPostIterate(const NOX::Solver::Generic& solver) override {
     const double normF = solver.getSolutionGroup().getNormF();
-    // |dx| and the step from the status test, which ran just before (TOOLCHAIN.md).
+    // |dx| and the step from the status test, which ran just before (docs/toolchain.md).
     log() << "    newton " << std::setw(2) << solver.getNumIterations() << "  |F| = " << std::scientific
           << std::setprecision(3) << normF << "  |dx| = " << m_test.normDx() << "  step = " << std::defaultfloat
           << m_test.step() << (m_test.atRoundoff() ? "  (converged: update at round-off)" : "") << "\n";
@@ -92,6 +94,20 @@ class NewtonLogger : public NOX::Observer {
 bool isFinite(const Vector& v) { return std::isfinite(v.norm2()); }
 
 }  // namespace
+
+void SolveReport::report(nlohmann::json& summary) const {
+  summary["converged"] = converged;
+  summary["message"] = message;
+  summary["newton_iterations"] = newtonIterations;
+  summary["linear_problem"] = linear;
+  summary["continuation_stages"] = continuationStages;
+  summary["residual_norm"] = residualNorm;
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& s : stages)
+    list.push_back({{"rate_exponent", s.rateExponent}, {"cutoff", s.cutoff}, {"newton_iterations", s.newtonIterations},
+                    {"converged", s.converged}, {"residual_norm", s.residualNorm}});
+  summary["stages"] = list;
+}
 
 Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
   static Teuchos::RCP<Teuchos::ParameterList> valid;
@@ -107,14 +123,7 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
   Teuchos::setStringToIntegralParameter<int>(
       "Line Search", "Backtrack", "NOX line search: Backtrack (halving on ||F||), Polynomial, Full Step",
       Teuchos::tuple<std::string>("Backtrack", "Polynomial", "Full Step"), valid.get());
-  Teuchos::ParameterList& linear = valid->sublist("Linear Solver", false, "the direct solver of the Newton systems");
-  using Ordering = LinearSolver::Ordering;
-  Teuchos::setStringToIntegralParameter<Ordering>(
-      "Ordering", LinearSolver::orderingName(Ordering::NestedDissection),
-      "fill-reducing ordering for KLU2: Nested Dissection (METIS), AMD (Amesos2's KLU2 as shipped)",
-      Teuchos::tuple<std::string>(LinearSolver::orderingName(Ordering::NestedDissection),
-                                  LinearSolver::orderingName(Ordering::Amd)),
-      Teuchos::tuple<Ordering>(Ordering::NestedDissection, Ordering::Amd), &linear);
+  valid->set("Linear Solver", *validLinearSolverParameters(), "the direct solver of the Newton systems");
   Teuchos::ParameterList& cont = valid->sublist("Continuation", false, "continuation in n and e0");
   cont.set("Start Exponent", 1.0, "n at the first stage", positive);
   cont.set("Start Cutoff", 0.1, "e0 at the first stage (if larger than the target's)", positive);

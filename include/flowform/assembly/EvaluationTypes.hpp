@@ -1,42 +1,49 @@
-// The evaluation types of the templated residual loops (Albany's EvalT, without Phalanx):
-//   Residual  double                      values
-//   Jacobian  Sacado SFad<double, N>      N = the dofs of a cell (or a wall node's stencil)
-//   Tangent   TangentFad = SFad<double, 1> x seeded along a direction dx and a parameter h
-//             seeded (derivative 1): one pass gives J dx + ∂R/∂h, and with dx = 0 ∂R/∂h
-// and the helpers that seed and read them. Only the Assembler and the Responses seed, and
-// only through these.
+// The evaluation types of the one templated assembly loop (Albany's EvalT and gather/
+// scatter, without Phalanx):
+//
+//   ResidualEval   double                    values: F(x)
+//   JacobianEval   Sacado SFad<double, N>    N = the dofs of a cell (or of a wall node's
+//                                            stencil): F(x) and J = dF/dx
+//   TangentEval    TangentFad = SFad<1>      x seeded along a direction dx and a parameter h
+//                                            seeded (derivative 1): J dx + ∂F/∂h in one pass,
+//                                            ∂F/∂h with dx = 0
+//
+// gather() reads an element's dofs from the workset and seeds them as the type wants;
+// scatter() adds the element rows back (values, matrix rows, or directional derivatives).
+// These two and the parameter seeding below are the only places that seed or read
+// derivatives; the kernels and the friction laws never do.
 #pragma once
 
 #include <type_traits>
+#include <vector>
 
 #include <Sacado.hpp>
 
-#include "flowform/Material.hpp"
-#include "flowform/SensitivityParameter.hpp"
+#include "flowform/assembly/SensitivityParameter.hpp"
 #include "flowform/contact/ContactWall.hpp"
+#include "flowform/core/TpetraTypes.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/physics/Material.hpp"
 
 namespace flowform {
 
 using TangentFad = Sacado::Fad::SFad<double, 1>;
 
-/// The material with h seeded: T is an AD type with one derivative (Sacado SFad<double, 1>);
-/// seeding a null or a friction parameter gives every entry a zero derivative.
-template <typename T>
-MaterialParameters<T> seededMaterial(const MaterialParameters<double>& m, const SensitivityParameter* h) {
-  auto seed = [&](double value, ParameterKind kind) { return h && h->kind == kind ? T(1, 0, value) : T(value); };
-  return {seed(m.yieldStress, ParameterKind::YieldStress), seed(m.rateConstant, ParameterKind::RateConstant),
-          seed(m.rateExponent, ParameterKind::RateExponent), T(m.cutoff)};
-}
-
-/// Wall `w`'s ν and m with h seeded where h enters that wall.
-template <typename T>
-FrictionParameters<T> seededFriction(const ContactWall& wall, int w, const SensitivityParameter* h) {
-  const FrictionParameters<double> fp = wall.frictionParameters();
-  const bool seeded = h && h->entersWall(w, wall);
-  auto seed = [&](double value, ParameterKind kind) { return seeded && h->kind == kind ? T(1, 0, value) : T(value); };
-  return {seed(fp.frictionCoefficient, ParameterKind::FrictionCoefficient),
-          seed(fp.shearFactor, ParameterKind::ShearFactor)};
-}
+struct ResidualEval {
+  template <int N>
+  using Scalar = double;
+  using ParamScalar = double;
+};
+struct JacobianEval {
+  template <int N>
+  using Scalar = Sacado::Fad::SFad<double, N>;
+  using ParamScalar = double;
+};
+struct TangentEval {
+  template <int N>
+  using Scalar = TangentFad;
+  using ParamScalar = TangentFad;
+};
 
 /// A value with one directional derivative (val, d) for the tangent evaluations.
 template <typename T>
@@ -46,28 +53,93 @@ T dual(double value, double derivative) {
   return t;
 }
 
-/// The two evaluation types that share one templated loop: Residual (double: values) and
-/// tangent (T: x seeded along a direction dx, h seeded). Input: the value, and for T its
-/// derivative; output: the value, or the derivative.
-template <typename Scalar>
-void setInput(Scalar& s, double value, double derivative) {
-  if constexpr (std::is_same_v<Scalar, double>) s = value;
-  else s = dual<Scalar>(value, derivative);
+/// The material with h seeded (PScalar TangentFad); PScalar double: the values.
+template <typename PScalar>
+MaterialParameters<PScalar> materialFor(const MaterialParameters<double>& m, const SensitivityParameter* h) {
+  if constexpr (std::is_same_v<PScalar, double>) {
+    return m;
+  } else {
+    auto seed = [&](double value, ParameterKind kind) {
+      return h && h->kind == kind ? PScalar(1, 0, value) : PScalar(value);
+    };
+    return {seed(m.yieldStress, ParameterKind::YieldStress), seed(m.rateConstant, ParameterKind::RateConstant),
+            seed(m.rateExponent, ParameterKind::RateExponent), PScalar(m.cutoff)};
+  }
 }
-template <typename Scalar>
-double output(const Scalar& s) {
-  if constexpr (std::is_same_v<Scalar, double>) return s;
-  else return s.dx(0);
+
+/// Wall `w`'s ν and m, with h seeded where h enters that wall (PScalar TangentFad).
+template <typename PScalar>
+FrictionParameters<PScalar> frictionFor(const ContactWall& wall, int w, const SensitivityParameter* h) {
+  const FrictionParameters<double> fp = wall.frictionParameters();
+  if constexpr (std::is_same_v<PScalar, double>) {
+    return fp;
+  } else {
+    const bool seeded = h && h->entersWall(w, wall);
+    auto seed = [&](double value, ParameterKind kind) {
+      return seeded && h->kind == kind ? PScalar(1, 0, value) : PScalar(value);
+    };
+    return {seed(fp.frictionCoefficient, ParameterKind::FrictionCoefficient),
+            seed(fp.shearFactor, ParameterKind::ShearFactor)};
+  }
 }
+
+using HostView = decltype(std::declval<const Vector&>().getLocalViewHost(Tpetra::Access::ReadOnly));
+using HostViewRW = decltype(std::declval<Vector&>().getLocalViewHost(Tpetra::Access::ReadWrite));
+
+/// What one evaluation reads and writes, on the overlap map: x, the direction dx (tangent
+/// only), the residual f and the matrix (each optional).
+struct Workset {
+  const DofMap* dofMap = nullptr;
+  HostView x, dx;
+  bool hasDirection = false;
+  HostViewRW f;
+  bool hasResidual = false;
+  FECrsMatrix* jacobian = nullptr;
+};
+
+/// The element's dofs at overlap dofs `dofs[0..n)` (−1: an absent neighbour, value 0 and
+/// no derivative), seeded for Scalar: SFad<n> seeds dof i as independent variable i; the
+/// tangent type carries dx along.
 template <typename Scalar>
-MaterialParameters<Scalar> materialFor(const MaterialParameters<double>& m, const SensitivityParameter* h) {
-  if constexpr (std::is_same_v<Scalar, double>) return m;
-  else return seededMaterial<Scalar>(m, h);
+void gather(const Workset& ws, const LO* dofs, int n, Scalar* out) {
+  for (int i = 0; i < n; ++i) {
+    const LO d = dofs[i];
+    if (d < 0) {
+      out[i] = Scalar(0.0);
+    } else if constexpr (std::is_same_v<Scalar, double>) {
+      out[i] = ws.x(d, 0);
+    } else if constexpr (std::is_same_v<Scalar, TangentFad>) {
+      out[i] = dual<TangentFad>(ws.x(d, 0), ws.hasDirection ? ws.dx(d, 0) : 0.0);
+    } else {
+      out[i] = Scalar(n, i, ws.x(d, 0));
+    }
+  }
 }
+
+/// Adds element rows res[0..nrows) into overlap rows `rows`: values (double), directional
+/// derivatives (TangentFad), or matrix rows over the columns of the gathered `dofs[0..n)`
+/// (absent ones skipped) and, when the workset has a residual, the values (SFad).
 template <typename Scalar>
-FrictionParameters<Scalar> frictionFor(const ContactWall& wall, int w, const SensitivityParameter* h) {
-  if constexpr (std::is_same_v<Scalar, double>) return wall.frictionParameters();
-  else return seededFriction<Scalar>(wall, w, h);
+void scatter(Workset& ws, const LO* rows, int nrows, const LO* dofs, int n, const Scalar* res) {
+  if constexpr (std::is_same_v<Scalar, double>) {
+    for (int r = 0; r < nrows; ++r) ws.f(rows[r], 0) += res[r];
+  } else if constexpr (std::is_same_v<Scalar, TangentFad>) {
+    for (int r = 0; r < nrows; ++r) ws.f(rows[r], 0) += res[r].dx(0);
+  } else {
+    constexpr int kMax = Sacado::StaticSize<Scalar>::value;  // SFad<double, N>: N
+    LO cols[kMax];
+    double values[kMax];
+    for (int r = 0; r < nrows; ++r) {
+      int m = 0;
+      for (int j = 0; j < n; ++j) {
+        if (dofs[j] < 0) continue;
+        cols[m] = ws.dofMap->column(dofs[j]);
+        values[m++] = res[r].dx(j);
+      }
+      ws.jacobian->sumIntoLocalValues(rows[r], m, values, cols);
+      if (ws.hasResidual) ws.f(rows[r], 0) += res[r].val();
+    }
+  }
 }
 
 }  // namespace flowform

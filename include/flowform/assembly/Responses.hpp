@@ -12,7 +12,7 @@
 //                     Σ_tools Boundary Power = Plastic + Friction + Penalty + Stabilization
 //                     holds to solver tolerance; the last two vanish as h → 0.
 //   Dead Zone       — area (volume) of the cells where |u| < Fraction × Reference Speed
-// Derivatives (SPEC §4, paper eq. 21): dφ/dh = ∂φ/∂h + ∂φ/∂q dq/dh is the same evaluation
+// Derivatives (docs/theory.md §4, paper eq. 21): dφ/dh = ∂φ/∂h + ∂φ/∂q dq/dh is the same evaluation
 // on a directional-derivative Fad, x seeded along dq/dh and h seeded (the reactions' part
 // from Assembler::tangent). Dead Zone is piecewise constant in q and has none.
 // Forces are per unit depth in plane strain (for the modelled half when symmetric), total
@@ -25,9 +25,9 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "flowform/Assembler.hpp"
-#include "flowform/DofMap.hpp"
-#include "flowform/Mesh.hpp"
+#include "flowform/assembly/Assembler.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/mesh/Mesh.hpp"
 #include "flowform/contact/ContactWall.hpp"
 
 namespace flowform {

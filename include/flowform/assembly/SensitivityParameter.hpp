@@ -1,4 +1,4 @@
-// A parameter h of the model that sensitivity analysis differentiates by (SPEC §4, paper
+// A parameter h of the model that sensitivity analysis differentiates by (docs/theory.md §4, paper
 // §3): the friction coefficient ν (every contact wall, or one), the shear factor m (the
 // same), and the material's σ0, γ, n. The case names them in Sensitivity/Parameters:
 //
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "flowform/Material.hpp"
+#include "flowform/physics/Material.hpp"
 #include "flowform/contact/ContactWall.hpp"
 
 namespace flowform {

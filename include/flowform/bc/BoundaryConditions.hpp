@@ -1,4 +1,4 @@
-// Boundary conditions by gmsh physical-group name (SPEC §2, first bullet):
+// Boundary conditions by gmsh physical-group name (docs/theory.md §2, first bullet):
 //   Velocity   — one or both components prescribed ("Velocity X", "Velocity Y")
 //   Symmetry   — zero normal velocity on a straight boundary of any orientation
 //   Traction   — a given traction vector t̄ ("Traction X", "Traction Y"; default 0 = free)
@@ -20,9 +20,9 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "flowform/DofMap.hpp"
-#include "flowform/Mesh.hpp"
-#include "flowform/Types.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/mesh/Mesh.hpp"
+#include "flowform/core/Types.hpp"
 
 namespace flowform {
 
@@ -72,11 +72,20 @@ class BoundaryConditions {
   const std::vector<NodeConstraint>& constraints() const { return m_constraints; }
   const std::vector<TractionEdge>& tractionEdges() const { return m_tractionEdges; }
 
+  /// Recomputes what depends on the node positions (the directions of symmetry
+  /// constraints) after the mesh's nodes moved; InputError if a Symmetry group is no longer
+  /// straight.
+  void refreshGeometry(const Mesh& mesh);
+
   /// Sets the constrained components of an owned solution vector so that a·u = b holds
   /// (the initial guess then satisfies every constraint, and Newton keeps it so).
   void imposeOnSolution(Vector& xOwned) const;
 
  private:
+  void build(const Mesh& mesh);
+
+  Teuchos::ParameterList m_bcList;
+  const DofMap& m_dofMap;
   std::vector<NodeConstraint> m_constraints;
   std::vector<TractionEdge> m_tractionEdges;
 };

@@ -10,7 +10,7 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "flowform/Types.hpp"
+#include "flowform/core/Types.hpp"
 
 namespace flowform {
 

@@ -3,7 +3,12 @@
 // Cells are partitioned (METIS on more than one rank); a node is owned by the lowest rank
 // among the cells that touch it. The overlapped ("owned plus shared") node list holds every
 // node of this rank's cells, owned nodes first — the layout Tpetra's FECrsGraph expects.
-// Dof global id = kDofsPerNode * node + component.
+//
+// Dofs: node n carries numFields(n) fields (from the element layout: 3 at every node of the
+// equal-order elements); its dofs are numbered contiguously after those of nodes 0..n-1,
+//     global dof (n, field) = offset(n) + field,
+// and the overlap dofs of this rank follow the overlap nodes in the same way. Nothing else
+// in flowform computes a dof index: it asks this map.
 #pragma once
 
 #include <array>
@@ -11,8 +16,8 @@
 
 #include <Teuchos_RCP.hpp>
 
-#include "flowform/Mesh.hpp"
-#include "flowform/TpetraTypes.hpp"
+#include "flowform/core/TpetraTypes.hpp"
+#include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
 
@@ -34,27 +39,46 @@ class DofMap {
 
   /// Cells this rank assembles (mesh cell ids).
   const std::vector<GO>& cells() const { return m_cells; }
-  /// Overlap-local node index of node a of this rank's cell k: cellNodes()[k * npc + a].
-  const std::vector<LO>& cellNodes() const { return m_cellNodes; }
+  /// Nodes per cell of the mesh.
+  int nodesPerCell() const { return m_nodesPerCell; }
+  /// Overlap-local node indices of this rank's cell k (nodesPerCell() of them).
+  const LO* cellNodes(size_t k) const { return m_cellNodes.data() + m_nodesPerCell * k; }
   /// Overlap-local node index -> mesh node id.
   const std::vector<GO>& overlapNodes() const { return m_overlapNodes; }
   /// Nodes owned by this rank are overlap-local indices 0 .. numOwnedNodes()-1.
   LO numOwnedNodes() const { return m_numOwnedNodes; }
   /// Overlap-local index of mesh node `node`, or -1 when it is not on this rank.
   LO overlapIndex(GO node) const { return m_overlapIndexOfNode[node]; }
-  /// Column-map local index of dof (overlap node `n`, component `c`), for the matrix in
-  /// its "owned plus shared" (assembly) state.
-  LO columnIndex(LO n, int c) const { return m_columnOfOverlapDof[kDofsPerNode * n + c]; }
+
+  /// Overlap-local dof of (overlap node `n`, field); the owned map's local index too when n
+  /// is owned (owned nodes come first in both).
+  LO dof(LO n, int field) const { return m_localOffset[n] + field; }
+  /// Global dof id of (mesh node `node`, field).
+  GO globalDof(GO node, int field) const { return m_globalOffset[node] + field; }
+  /// Fields carried by mesh node `node`.
+  int numFields(GO node) const { return static_cast<int>(m_globalOffset[node + 1] - m_globalOffset[node]); }
+  /// Global number of dofs.
+  GO numGlobalDofs() const { return m_globalOffset.back(); }
+  /// The mesh node and field of a global dof id (inverse of globalDof).
+  GO nodeOfGlobalDof(GO dof) const;
+  int fieldOfGlobalDof(GO dof) const { return static_cast<int>(dof - m_globalOffset[nodeOfGlobalDof(dof)]); }
+
+  /// Column-map local index of overlap dof `d`, for the matrix in its "owned plus shared"
+  /// (assembly) state; −1 for d < 0 (an absent neighbour).
+  LO column(LO d) const { return d < 0 ? LO(-1) : m_columnOfOverlapDof[d]; }
   /// Part of every mesh cell (the partition), replicated.
   const std::vector<int>& cellPart() const { return m_cellPart; }
 
  private:
   Teuchos::RCP<const Comm> m_comm;
+  int m_nodesPerCell = 0;
   std::vector<int> m_cellPart;
   std::vector<GO> m_cells;
   std::vector<LO> m_cellNodes;
   std::vector<GO> m_overlapNodes;
   std::vector<LO> m_overlapIndexOfNode;
+  std::vector<GO> m_globalOffset;  ///< per mesh node, and the total at the end
+  std::vector<LO> m_localOffset;   ///< per overlap node, and the total at the end
   std::vector<LO> m_columnOfOverlapDof;
   LO m_numOwnedNodes = 0;
   Teuchos::RCP<const Map> m_ownedMap, m_overlapMap;

@@ -6,7 +6,7 @@
 #include <array>
 #include <cmath>
 
-#include "flowform/Mesh.hpp"
+#include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
 

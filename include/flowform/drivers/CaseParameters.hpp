@@ -6,6 +6,8 @@
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
+#include "flowform/physics/FlowPhysics.hpp"
+
 namespace flowform {
 
 /// Every parameter a case may set, with its default and documentation.
@@ -17,5 +19,8 @@ Teuchos::RCP<const Teuchos::ParameterList> validCaseParameters();
 /// sublist when there is one. The free-form sublists (Boundary Conditions, Responses) are
 /// checked by their owners. Throws InputError.
 void validateCase(Teuchos::ParameterList& params);
+
+/// The bulk physics (geometry, body force, β, the material law) of a validated case.
+FlowPhysics physicsFromCase(const Teuchos::ParameterList& params);
 
 }  // namespace flowform

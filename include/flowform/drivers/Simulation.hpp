@@ -1,5 +1,7 @@
-// One flowform run: the validated case, its mesh and discretization, the solve, and the
-// results on disk. main.cpp is a thin command-line layer over this; tests drive it too.
+// One flowform run, a thin driver over the pieces: the validated case, its mesh and
+// discretization, the flow solve with the contact-status loop, the responses, the
+// sensitivities when asked for, and the results on disk (each piece reports its own part
+// of summary.json). main.cpp is a command-line layer over this; tests drive it too.
 #pragma once
 
 #include <map>
@@ -9,18 +11,18 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "flowform/Assembler.hpp"
-#include "flowform/FiniteDifferenceCheck.hpp"
-#include "flowform/BoundaryConditions.hpp"
-#include "flowform/DofMap.hpp"
-#include "flowform/FlowModel.hpp"
-#include "flowform/Mesh.hpp"
-#include "flowform/NonlinearSolver.hpp"
-#include "flowform/Responses.hpp"
-#include "flowform/Sensitivity.hpp"
+#include "flowform/assembly/Assembler.hpp"
+#include "flowform/assembly/Responses.hpp"
+#include "flowform/bc/BoundaryConditions.hpp"
 #include "flowform/contact/ContactWall.hpp"
-#include "flowform/contact/StatusLoop.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/drivers/ContactStatusLoop.hpp"
 #include "flowform/io/FieldSet.hpp"
+#include "flowform/mesh/Mesh.hpp"
+#include "flowform/sensitivity/FiniteDifferenceCheck.hpp"
+#include "flowform/sensitivity/Sensitivity.hpp"
+#include "flowform/solvers/FlowModel.hpp"
+#include "flowform/solvers/NonlinearSolver.hpp"
 
 namespace flowform {
 
@@ -40,6 +42,12 @@ class Simulation {
   /// finite-difference check. The report says whether the flow solve converged.
   const SolveReport& run();
 
+  /// Moves the mesh nodes to `coords` (same topology; every cell must stay positively
+  /// oriented, else InputError naming the cell) and refreshes what caches geometry: the
+  /// walls' curves and corners, the symmetry directions; the factors are dropped. The
+  /// solution is kept as the next solve's start.
+  void moveNodes(const std::vector<std::array<double, 2>>& coords);
+
   /// summary.json, solution.h5/.xdmf and the boundary CSVs in `outDir` (created).
   void writeOutput(const std::string& outDir) const;
 
@@ -49,6 +57,7 @@ class Simulation {
   const FlowPhysics& physics() const { return m_physics; }
   const Vector& solution() const { return *m_solution; }
   FlowModel& model() { return *m_model; }
+  const Assembler& assembler() const { return *m_assembler; }
   const SolveReport& report() const { return m_report; }
   /// 0; 3 when the flow solve did not converge, dq/dh is not finite, or a run of the
   /// finite-difference check did not converge (the results are written all the same).
@@ -66,10 +75,13 @@ class Simulation {
  private:
   /// Penalty scales of every wall from the current solution.
   void updateWallScales(const Vector& x);
+  /// A Newton solver on the case's Solver sublist; `refreshScales` makes the walls take their
+  /// penalty scales from the state before every Newton solve.
+  NonlinearSolver newtonSolver(bool refreshScales);
   /// DDM sensitivities at the converged solution and, when asked, their FD check.
   void runSensitivity();
   /// The solve at h + delta from the converged state, with its contact loop; the case's
-  /// parameters, walls and model are restored afterwards.
+  /// physics, the walls' state and the model are restored afterwards.
   PerturbedRun solvePerturbed(const SensitivityParameter& h, double delta);
 
   Teuchos::ParameterList m_params;

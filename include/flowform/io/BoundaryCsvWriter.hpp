@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "flowform/BoundaryCurve.hpp"
-#include "flowform/Mesh.hpp"
+#include "flowform/mesh/BoundaryCurve.hpp"
+#include "flowform/mesh/Mesh.hpp"
 #include "flowform/io/FieldSet.hpp"
 
 namespace flowform {

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "flowform/Mesh.hpp"
+#include "flowform/mesh/Mesh.hpp"
 #include "flowform/io/FieldSet.hpp"
 
 namespace flowform {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "flowform/Mesh.hpp"
+#include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
 

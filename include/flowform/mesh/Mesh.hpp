@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "flowform/Types.hpp"
+#include "flowform/core/Types.hpp"
 
 namespace flowform {
 
@@ -43,6 +43,12 @@ struct Mesh {
   GO numNodes() const { return static_cast<GO>(coords.size()); }
   GO numCells() const { return static_cast<GO>(cellNodes.size()) / nodesPerCell(cellType); }
   const GO* cell(GO c) const { return cellNodes.data() + c * nodesPerCell(cellType); }
+
+  /// Moves the nodes to `newCoords` (one per node). InputError naming the first cell that
+  /// would not be positively oriented (inverted or degenerate) at the new positions; the mesh
+  /// is then unchanged. What caches geometry must be refreshed by its owner after this
+  /// (Simulation::moveNodes does it for a run).
+  void setCoordinates(const std::vector<std::array<double, 2>>& newCoords);
 
   /// The boundary group of that name; InputError naming the mesh and the groups it has otherwise.
   const BoundaryGroup& boundary(const std::string& name) const;

@@ -7,7 +7,7 @@
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 
-#include "flowform/Mesh.hpp"
+#include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
 

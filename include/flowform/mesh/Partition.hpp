@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "flowform/Mesh.hpp"
+#include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
 

@@ -1,4 +1,4 @@
-// The element residual of the stabilized rigid-viscoplastic flow (SPEC §1), templated on
+// The element residual of the stabilized rigid-viscoplastic flow (docs/theory.md §1), templated on
 // the scalar type of the dofs (Scalar) and of the material parameters (PScalar). It never
 // seeds or reads derivatives: the assembler does (Residual, Jacobian, ParamDeriv).
 //
@@ -16,9 +16,10 @@
 
 #include <cmath>
 
-#include "flowform/Material.hpp"
-#include "flowform/Types.hpp"
-#include "flowform/kernels/ShapeFunctions.hpp"
+#include "flowform/core/Types.hpp"
+#include "flowform/discretization/CellGeometry.hpp"
+#include "flowform/discretization/ElementLayout.hpp"
+#include "flowform/physics/Material.hpp"
 
 namespace flowform {
 
@@ -43,8 +44,8 @@ StrainRate<Scalar> strainRateAt(const CellQuadrature& cq, int q, Geometry geomet
   StrainRate<Scalar> d{0.0, 0.0, 0.0, 0.0};
   Scalar ur = 0.0;
   for (int a = 0; a < cq.numNodes; ++a) {
-    const Scalar& ux = dofs[kDofsPerNode * a + kUx];
-    const Scalar& uy = dofs[kDofsPerNode * a + kUy];
+    const Scalar& ux = dofs[EqualOrderLayout::index(a, kUx)];
+    const Scalar& uy = dofs[EqualOrderLayout::index(a, kUy)];
     d.xx += cq.dNdx[q][a] * ux;
     d.yy += cq.dNdy[q][a] * uy;
     d.xy += 0.5 * (cq.dNdy[q][a] * ux + cq.dNdx[q][a] * uy);
@@ -54,12 +55,21 @@ StrainRate<Scalar> strainRateAt(const CellQuadrature& cq, int q, Geometry geomet
   return d;
 }
 
-/// Integration weight of point q, with the 2π r of the axisymmetric measure.
-inline double measureWeight(const CellQuadrature& cq, int q, Geometry geometry) {
-  return geometry == Geometry::Axisymmetric ? 2.0 * M_PI * cq.x[q] * cq.weight[q] : cq.weight[q];
+/// μ at the centroid of the cell (the one-point rule `centroid`): the μ_K of τ_K.
+template <typename Scalar, typename PScalar>
+Scalar centroidViscosity(const CellQuadrature& centroid, Geometry geometry, const MaterialParameters<PScalar>& material,
+                         const Scalar* dofs) {
+  const StrainRate<Scalar> dc = strainRateAt(centroid, 0, geometry, dofs);
+  return viscosity(regularizedStrainRate(dc.ddot(), material), material);
 }
 
-/// Adds the cell residual (kDofsPerNode per node, node-major) into `residual`.
+/// τ_K = β h_K² / (2 μ_K), the stabilization parameter of the cell.
+template <typename Scalar>
+Scalar stabilizationTau(double beta, double hK, const Scalar& muK) {
+  return beta * hK * hK / (2.0 * muK);
+}
+
+/// Adds the cell residual (EqualOrderLayout: u_x, u_y, p per node, node-major) into `residual`.
 /// `cq` is the integration rule, `centroid` a one-point rule at the centroid (for μ_K),
 /// `hK` the cell diameter.
 template <typename Scalar, typename PScalar>
@@ -69,10 +79,7 @@ void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, d
   const Geometry geometry = settings.geometry;
   const double fx = settings.bodyForce[0], fy = settings.bodyForce[1];
 
-  // τ_K = β h_K² / (2 μ_K)
-  const StrainRate<Scalar> dc = strainRateAt(centroid, 0, geometry, dofs);
-  const Scalar muK = viscosity(regularizedStrainRate(dc.ddot(), material), material);
-  const Scalar tau = settings.beta * hK * hK / (2.0 * muK);
+  const Scalar tau = stabilizationTau(settings.beta, hK, centroidViscosity(centroid, geometry, material, dofs));
 
   for (int q = 0; q < cq.numPoints; ++q) {
     const double w = measureWeight(cq, q, geometry);
@@ -83,7 +90,7 @@ void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, d
 
     Scalar p = 0.0, dpdx = 0.0, dpdy = 0.0;
     for (int a = 0; a < cq.numNodes; ++a) {
-      const Scalar& pa = dofs[kDofsPerNode * a + kP];
+      const Scalar& pa = dofs[EqualOrderLayout::index(a, kP)];
       p += cq.N[q][a] * pa;
       dpdx += cq.dNdx[q][a] * pa;
       dpdy += cq.dNdy[q][a] * pa;
@@ -94,11 +101,11 @@ void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, d
     for (int a = 0; a < cq.numNodes; ++a) {
       const double N = cq.N[q][a], Nx = cq.dNdx[q][a], Ny = cq.dNdy[q][a];
       // s : D(N_a e_x) = s_xx N_x + s_xy N_y + s_θθ N / r;  div(N_a e_x) = N_x + N / r
-      residual[kDofsPerNode * a + kUx] +=
+      residual[EqualOrderLayout::index(a, kUx)] +=
           w * (sxx * Nx + sxy * Ny + stt * (N * invR) - p * (Nx + N * invR) - N * fx);
       // s : D(N_a e_y) = s_xy N_x + s_yy N_y;  div(N_a e_y) = N_y
-      residual[kDofsPerNode * a + kUy] += w * (sxy * Nx + syy * Ny - p * Ny - N * fy);
-      residual[kDofsPerNode * a + kP] += w * (-N * divU - (Nx * gx + Ny * gy));
+      residual[EqualOrderLayout::index(a, kUy)] += w * (sxy * Nx + syy * Ny - p * Ny - N * fy);
+      residual[EqualOrderLayout::index(a, kP)] += w * (-N * divU - (Nx * gx + Ny * gy));
     }
   }
 }

@@ -1,4 +1,4 @@
-// The rigid-viscoplastic law of SPEC §1 (paper eq. 4-5), templated on the scalar type so
+// The rigid-viscoplastic law of docs/theory.md §1 (paper eq. 4-5), templated on the scalar type so
 // that the same code gives values (double), the exact tangent (Sacado Fad of the element
 // dofs) and parameter derivatives (Fad of the material parameters).
 //

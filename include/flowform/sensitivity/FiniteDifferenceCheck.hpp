@@ -1,4 +1,4 @@
-// The built-in finite-difference check of the sensitivities (SPEC §4): for every parameter
+// The built-in finite-difference check of the sensitivities (docs/theory.md §4): for every parameter
 // h, two more nonlinear solves at h + δ and h − δ, each from the converged state and with
 // its full contact-status loop, and the central difference
 //
@@ -23,11 +23,12 @@
 #include <Teuchos_RCP.hpp>
 #include <nlohmann/json_fwd.hpp>
 
-#include "flowform/Mesh.hpp"
-#include "flowform/Sensitivity.hpp"
-#include "flowform/TpetraTypes.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/mesh/Mesh.hpp"
+#include "flowform/sensitivity/Sensitivity.hpp"
+#include "flowform/core/TpetraTypes.hpp"
 #include "flowform/contact/ContactWall.hpp"
-#include "flowform/contact/StatusLoop.hpp"
+#include "flowform/drivers/ContactStatusLoop.hpp"
 
 namespace flowform {
 
@@ -50,7 +51,8 @@ class FiniteDifferenceCheck {
   /// Runs both perturbed solves for every parameter of `sensitivity` (after its compute())
   /// and compares. `base` is the converged run; `physics` gives the relative steps' scales.
   FiniteDifferenceCheck(const Sensitivity& sensitivity, const PerturbedRun& base, const FlowPhysics& physics,
-                        const std::vector<ContactWall>& walls, const Mesh& mesh, const Runner& run);
+                        const std::vector<ContactWall>& walls, const Mesh& mesh, const DofMap& dofMap,
+                        const Runner& run);
 
   bool allConverged() const { return m_allConverged; }
   /// The number of perturbed nonlinear solves and their Newton iterations.

@@ -1,4 +1,4 @@
-// Sensitivity by direct differentiation (SPEC §4, paper §3). At the converged solution q of
+// Sensitivity by direct differentiation (docs/theory.md §4, paper §3). At the converged solution q of
 // R(q; h) = 0 the derivative of the equations along h is (paper eqs. 24–27)
 //
 //     K_t dq/dh = −∂R/∂h,        K_t = ∂R/∂q at the converged q,
@@ -28,11 +28,11 @@
 #include <Teuchos_RCP.hpp>
 #include <nlohmann/json_fwd.hpp>
 
-#include "flowform/DofMap.hpp"
-#include "flowform/FlowModel.hpp"
-#include "flowform/Mesh.hpp"
-#include "flowform/Responses.hpp"
-#include "flowform/SensitivityParameter.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/solvers/FlowModel.hpp"
+#include "flowform/mesh/Mesh.hpp"
+#include "flowform/assembly/Responses.hpp"
+#include "flowform/assembly/SensitivityParameter.hpp"
 #include "flowform/contact/ContactWall.hpp"
 
 namespace flowform {

@@ -2,13 +2,13 @@
 // model owns assembly and the Amesos2 factorization. Vectors are Tpetra vectors seen by
 // NOX through NOX::Thyra::Vector. (A thin group rather than NOX::Thyra::Group with a
 // Thyra model evaluator: we keep the one factorization under our control, so the
-// sensitivity solves reuse it, and avoid the Thyra-Amesos2 issues of TOOLCHAIN.md.)
+// sensitivity solves reuse it, and avoid the Thyra-Amesos2 issues of docs/toolchain.md.)
 #pragma once
 
 #include <NOX_Abstract_Group.H>
 #include <NOX_Thyra_Vector.H>
 
-#include "flowform/FlowModel.hpp"
+#include "flowform/solvers/FlowModel.hpp"
 
 namespace flowform {
 

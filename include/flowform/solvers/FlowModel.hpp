@@ -1,20 +1,23 @@
 // The discrete flow problem as Newton sees it: F(x), the exact Jacobian J(x) and solves
 // with its factorization. Keeps one Jacobian matrix and one factorization, and remembers
 // at which x they were computed (the sensitivity solve needs the converged point's).
+// Assembling J and factoring it are separate steps (assembleJacobian, factorJacobian);
+// the factors belong to the linear solver, chosen by the case (LinearSolverRegistry).
 #pragma once
+
+#include <memory>
 
 #include <Teuchos_RCP.hpp>
 
-#include "flowform/Assembler.hpp"
-#include "flowform/LinearSolver.hpp"
-#include "flowform/TpetraTypes.hpp"
+#include "flowform/assembly/Assembler.hpp"
+#include "flowform/core/TpetraTypes.hpp"
+#include "flowform/solvers/LinearSolver.hpp"
 
 namespace flowform {
 
 class FlowModel {
  public:
-  explicit FlowModel(Assembler& assembler,
-                     LinearSolver::Ordering ordering = LinearSolver::Ordering::NestedDissection);
+  FlowModel(Assembler& assembler, std::unique_ptr<LinearSolver> linearSolver);
 
   const Assembler& assembler() const { return m_assembler; }
   /// Changes the physics (a continuation stage); the factorization no longer matches.
@@ -26,13 +29,22 @@ class FlowModel {
 
   /// f = F(x).
   void residual(const Vector& x, Vector& f);
-  /// Assembles J(x) and factors it. Throws std::runtime_error when the factorization fails.
-  void computeJacobian(const Vector& x);
-  /// out = J⁻¹ in, with the factors of the last computeJacobian() (one back-substitution
+  /// Assembles J(x) (the factors no longer match until factorJacobian()).
+  void assembleJacobian(const Vector& x);
+  /// Factors the assembled J. Throws std::runtime_error when the factorization fails.
+  void factorJacobian();
+  /// assembleJacobian(x), then factorJacobian().
+  void computeJacobian(const Vector& x) {
+    assembleJacobian(x);
+    factorJacobian();
+  }
+  /// out = J⁻¹ in, with the factors of the last factorJacobian() (one back-substitution
   /// per column).
-  void solve(const MultiVector& in, MultiVector& out);
+  void solve(const MultiVector& in, MultiVector& out) { m_linearSolver->solve(in, out); }
+  /// out = J⁻ᵀ in, with the same factors (adjoints).
+  void solveTranspose(const MultiVector& in, MultiVector& out) { m_linearSolver->solveTranspose(in, out); }
   /// out = J in.
-  void applyJacobian(const Vector& in, Vector& out) const;
+  void applyJacobian(const Vector& in, Vector& out) const { m_jacobian->apply(in, out); }
   /// Forgets the factorization (the physics changed, so J no longer matches).
   void invalidateJacobian() { m_jacobianValid = false; }
   bool hasJacobian() const { return m_jacobianValid; }
@@ -42,14 +54,14 @@ class FlowModel {
 
   int numResiduals() const { return m_numResiduals; }
   int numJacobians() const { return m_numJacobians; }
-  const LinearSolver& linearSolver() const { return m_linearSolver; }
+  const LinearSolver& linearSolver() const { return *m_linearSolver; }
   const FECrsMatrix& jacobian() const { return *m_jacobian; }
 
  private:
   Assembler& m_assembler;
   Teuchos::RCP<FECrsMatrix> m_jacobian;
   Teuchos::RCP<Vector> m_jacobianPoint;
-  LinearSolver m_linearSolver;
+  std::unique_ptr<LinearSolver> m_linearSolver;
   bool m_jacobianValid = false;
   int m_numResiduals = 0;
   int m_numJacobians = 0;

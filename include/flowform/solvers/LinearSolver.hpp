@@ -1,65 +1,55 @@
-// Direct solution of the Newton (and sensitivity) systems with Amesos2 KLU2.
+// The direct solver of the Newton, sensitivity (and later adjoint) systems: the interface
+// every implementation offers. Factoring is its own step, after assembly: factor(A) once,
+// then any number of solves with several right-hand sides, A x = b or Aᵀ x = b, with the
+// same factors. The counters and the summary report live here, once for all solvers.
 //
-// Ordering (case: Solver → Linear Solver → Ordering):
-//   "Nested Dissection" (default): METIS_NodeND, KLU2 called through its own functions
-//                       (KluNestedDissection.hpp: Amesos2::Solver takes no user ordering);
-//   "AMD": Amesos2::Solver's KLU2 as shipped (block-triangular form + AMD).
-// Both use KLU2's threshold partial pivoting; nested dissection has less fill on these
-// Jacobians and factors 1.7× faster at 3.2·10⁵ and 10⁶ dofs, 0.02–0.07 s slower below
-// 10⁵ (docs/BENCHMARKS.md §6).
-//
-// One process: KLU2 on the assembled matrix; the symbolic factorization (ordering) is done
-// once, since the sparsity never changes, and each new Jacobian costs one numeric
-// factorization. The factors stay until the next factor() call, so further right-hand
-// sides (the sensitivity solves) cost one back-substitution each.
-//
-// Several processes: Debian's Amesos2 KLU2 gives wrong answers on a distributed matrix
-// (TOOLCHAIN.md), so the matrix is gathered to rank 0 and factored there by a serial
-// KLU2; right-hand sides and solutions travel with the same Import. This keeps results
-// identical to the serial run; it does not scale the factorization (docs/BENCHMARKS.md).
+// Implementations (one file each, registered in LinearSolverRegistry.cpp, chosen by the
+// validated Solver → Linear Solver sublist):
+//   Klu2NestedDissection  KLU2 with a METIS nested-dissection ordering (the default)
+//   Klu2Amd               Amesos2's KLU2 as shipped (block triangular form + AMD)
+//   GatheredSolver        a serial solver on rank 0 of a distributed matrix (gather, factor,
+//                         scatter), for solvers that cannot factor a distributed matrix
 #pragma once
 
-#include <memory>
+#include <string>
 
 #include <Teuchos_RCP.hpp>
+#include <nlohmann/json_fwd.hpp>
 
-#include "flowform/TpetraTypes.hpp"
+#include "flowform/core/TpetraTypes.hpp"
 
 namespace flowform {
 
 class LinearSolver {
  public:
-  enum class Ordering { NestedDissection, Amd };
-  /// The names used in the case file, in the order of the enum.
-  static const char* orderingName(Ordering ordering);
+  virtual ~LinearSolver();
 
-  explicit LinearSolver(Ordering ordering = Ordering::NestedDissection);
-  ~LinearSolver();
-
-  /// Factors A (numeric; symbolic too on the first call). Throws std::runtime_error when
-  /// the matrix is singular (the message says so, for the caller to report).
+  /// Factors A (numeric; symbolic too when the pattern is new). Throws std::runtime_error
+  /// when the matrix is singular (the message says so, for the caller to report).
   void factor(const Teuchos::RCP<const CrsMatrix>& A);
   /// x = A⁻¹ b with the current factors, one back-substitution per column of b.
   void solve(const MultiVector& b, MultiVector& x);
+  /// x = A⁻ᵀ b with the same factors (adjoint problems).
+  void solveTranspose(const MultiVector& b, MultiVector& x);
 
-  Ordering ordering() const { return m_ordering; }
-  /// Entries of L + U of the current factors on this process; -1 when unknown (the AMD
-  /// path: Amesos2 does not report them; ranks other than 0 on several processes).
-  double factorEntries() const;
+  /// The case's name of the solver and of its ordering, e.g. "KLU2", "Nested Dissection".
+  virtual std::string type() const = 0;
+  virtual std::string ordering() const = 0;
+  /// Entries of L + U of the current factors on this process; -1 when unknown.
+  virtual double factorEntries() const { return -1.0; }
+
   int numFactorizations() const { return m_numFactorizations; }
-  /// Back-substitutions (right-hand sides solved) so far.
+  /// Back-substitutions (right-hand sides solved, either orientation) so far.
   int numSolves() const { return m_numSolves; }
+  /// "type", "ordering", "factorizations", "solves" and, when known, "factor_entries" into
+  /// `out` (the summary's "linear_solver").
+  void report(nlohmann::json& out) const;
+
+ protected:
+  virtual void doFactor(const Teuchos::RCP<const CrsMatrix>& A) = 0;
+  virtual void doSolve(const MultiVector& b, MultiVector& x, bool transpose) = 0;
 
  private:
-  struct Impl;
-  /// Factors a matrix whose rows are all on this process (serial communicator).
-  void factorLocal(const Teuchos::RCP<const CrsMatrix>& A);
-  /// Rank 0's part of a gathered factorization: the serial KLU2 on the gathered rows.
-  void factorOnRoot(const CrsMatrix& rootMatrix);
-  /// x = A⁻¹ b on this process, with the factors of factorLocal.
-  void solveLocal(const MultiVector& b, MultiVector& x);
-  std::unique_ptr<Impl> m_impl;
-  Ordering m_ordering;
   int m_numFactorizations = 0;
   int m_numSolves = 0;
 };

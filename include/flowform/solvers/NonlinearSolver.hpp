@@ -17,9 +17,10 @@
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
+#include <nlohmann/json_fwd.hpp>
 
-#include "flowform/FlowModel.hpp"
-#include "flowform/Material.hpp"
+#include "flowform/physics/FlowPhysics.hpp"
+#include "flowform/solvers/FlowModel.hpp"
 
 namespace flowform {
 
@@ -39,6 +40,9 @@ struct SolveReport {
   double residualNorm = 0.0;   ///< ||F|| at the returned x
   std::vector<StageReport> stages;
   std::string message;         ///< why it did not converge, when it did not
+  /// converged, linear_problem, newton_iterations, continuation_stages, residual_norm,
+  /// stages and message into the summary.
+  void report(nlohmann::json& summary) const;
 };
 
 class NonlinearSolver {

@@ -1,0 +1,64 @@
+// What every friction law of a contact wall gets and gives (docs/theory.md §2; the laws
+// themselves are one file each beside this one, registered in FrictionLaws.hpp).
+//
+// At an active wall node k with tangent t_k and u_t = u_k·t_k, the wall lumps the segment
+// integrals the laws need over the node's active segments s (2-point Gauss, exact here):
+//   P_k = Σ_s ∫_s N_k p⁺_h W ds    (compression: Coulomb-type laws),
+//   S_k = Σ_s ∫_s N_k σ̄_h W ds     (flow stress: Tresca-type laws),
+//   A_k = Σ_s ∫_s N_k W ds         (tributary area: viscous laws),
+// W = 2π r axisymmetric, 1 in plane strain. A law returns the tangential force g_k (along
+// t_k) and its branch. The bounded laws share the sticking rule boundedFriction():
+//   g_k = α_t u_t if α_t |u_t| ≤ f̂_k (stick),  f̂_k sign(u_t) otherwise (slip),
+// with α_t = κ_t μ_k W_k. Templated on the dof scalar (S) and the friction parameters'
+// scalar (P): values, the AD tangent and ∂/∂ν, ∂/∂m from one code.
+#pragma once
+
+namespace flowform {
+
+/// The friction parameters that sensitivity analysis may seed as AD variables.
+template <typename PScalar>
+struct FrictionParameters {
+  PScalar frictionCoefficient;  ///< ν (Coulomb, Orowan)
+  PScalar shearFactor;          ///< m (Tresca, Orowan)
+};
+
+/// Which branch of the law a wall node is on (a kink of the law lies between branches):
+/// Free (not in contact), NoFriction (active but not compressed, or law None), Stick,
+/// Slip (Coulomb-limited, or Tresca/Norton), SlipTresca (Orowan limited by m σ̄/√3).
+enum class FrictionBranch { Free, NoFriction, Stick, Slip, SlipTresca };
+const char* frictionBranchName(FrictionBranch b);
+
+/// The law's own constants (from the wall's parameter sublist).
+struct FrictionSettings {
+  double nortonCoefficient = 0.0;  ///< α_f K
+  double nortonExponent = 1.0;     ///< q
+  double nortonRegularization = 1e-6;
+};
+
+/// What the wall gives a law at one active node.
+template <typename Scalar>
+struct FrictionNodeData {
+  Scalar tangentialVelocity;    ///< u_t
+  Scalar pressureIntegral;      ///< P_k (0 unless the law needs it)
+  double stressIntegral;        ///< S_k (0 unless the law needs it)
+  double tributary;             ///< A_k (0 unless the law needs it)
+  double stickingStiffness;     ///< α_t
+};
+
+template <typename Scalar>
+struct FrictionForce {
+  Scalar g;
+  FrictionBranch branch;
+};
+
+/// The sticking rule of the bounded laws: stick while α_t |u_t| ≤ f̂, else slip at f̂
+/// against u_t. In stick g = α_t u_t does not depend on ν or m (∂g/∂ν = ∂g/∂m = 0).
+template <typename Scalar>
+FrictionForce<Scalar> boundedFriction(const FrictionNodeData<Scalar>& d, const Scalar& fHat, FrictionBranch slip) {
+  const Scalar& ut = d.tangentialVelocity;
+  const Scalar stick = d.stickingStiffness * ut;  // f* = α_t |u_t|, the sticking bound
+  if ((stick >= 0.0 ? stick : Scalar(-stick)) <= fHat) return {stick, FrictionBranch::Stick};
+  return {ut >= 0.0 ? fHat : Scalar(-fHat), slip};
+}
+
+}  // namespace flowform

@@ -1,0 +1,26 @@
+// Amesos2's KLU2 as shipped (block-triangular pre-ordering + AMD), on one process: the
+// "AMD" ordering of the KLU2 solver type, kept for comparison and as a fallback.
+#pragma once
+
+#include <Amesos2.hpp>
+
+#include "flowform/solvers/LinearSolver.hpp"
+
+namespace flowform {
+
+class Klu2Amd : public LinearSolver {
+ public:
+  std::string type() const override { return "KLU2"; }
+  std::string ordering() const override { return "AMD"; }
+
+ protected:
+  void doFactor(const Teuchos::RCP<const CrsMatrix>& A) override;
+  void doSolve(const MultiVector& b, MultiVector& x, bool transpose) override;
+
+ private:
+  Teuchos::RCP<const CrsMatrix> m_matrix;  ///< the matrix m_solver belongs to
+  Teuchos::RCP<Amesos2::Solver<CrsMatrix, MultiVector>> m_solver;
+  bool m_transposed = false;  ///< the orientation m_solver was last told to solve
+};
+
+}  // namespace flowform
