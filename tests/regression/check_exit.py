@@ -15,12 +15,12 @@ Prints the command, its status and its output, then each failed check; exits 0 w
 check passes, 1 otherwise.
 """
 import argparse
-import json
 import os
-import shlex
 import shutil
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
+from flowform_tools import launcher, summary as summary_module  # noqa: E402
 
 
 def main():
@@ -41,23 +41,20 @@ def main():
         sys.exit("check_exit.py: no command after '--'")
 
     shutil.rmtree(args.outdir, ignore_errors=True)
-    print("command:", " ".join(shlex.quote(c) for c in command))
-    try:
-        run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             timeout=args.timeout)
-    except subprocess.TimeoutExpired:
+    print("command:", launcher.command_line(command))
+    run = launcher.run_command(command, capture=True, timeout=args.timeout)
+    if run.timed_out:
         print(f"FAIL: no exit within {args.timeout:g} s (a rank waiting on a failed one?)")
         return 1
-    stdout = run.stdout.decode(errors="replace")
-    stderr = run.stderr.decode(errors="replace")
-    print(f"exit status: {run.returncode}")
+    stdout, stderr = run.stdout, run.stderr
+    print(f"exit status: {run.status}")
     print("--- stdout ---\n" + stdout.rstrip())
     print("--- stderr ---\n" + stderr.rstrip())
     print("--------------")
 
     failures = []
-    if run.returncode != args.status:
-        failures.append(f"exit status {run.returncode}, expected {args.status}")
+    if run.status != args.status:
+        failures.append(f"exit status {run.status}, expected {args.status}")
     for text in args.stderr_contains:
         if text not in stderr:
             failures.append(f"stderr does not contain {text!r}")
@@ -67,8 +64,7 @@ def main():
     if args.converged:
         path = os.path.join(args.outdir, "summary.json")
         try:
-            with open(path) as f:
-                summary = json.load(f)
+            summary = summary_module.load(path, missing_ok=False)
             if summary.get("converged") is not True:
                 failures.append(f"{path}: converged is {summary.get('converged')!r}, expected true")
             if summary.get("exit_status") != args.status:

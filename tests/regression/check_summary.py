@@ -7,8 +7,11 @@ compared exactly (JSON literal: true, 1, "text"). The run must exit N (default 0
 summary.json must exist whatever the status.
 """
 import json
-import subprocess
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
+from flowform_tools import launcher, summary  # noqa: E402
 
 
 def main():
@@ -20,18 +23,15 @@ def main():
     sep = args.index("--")
     flowform, case, outdir = args[0:3]
     extra, checks = args[3:sep], args[sep + 1:]
-    status = subprocess.run([flowform, case, "-o", outdir, "--quiet"] + extra).returncode
-    if status != expected_status:
-        print(f"flowform exited {status}, expected {expected_status}")
+    run = launcher.run(flowform, case, outdir, args=extra, quiet=True)
+    if run.status != expected_status:
+        print(f"flowform exited {run.status}, expected {expected_status}")
         return 1
-    with open(f"{outdir}/summary.json") as f:
-        summary = json.load(f)
+    result = summary.load(outdir, missing_ok=False)
     failed = False
     for check in checks:
         key, expected = check.split("=", 1)
-        value = summary
-        for part in key.split("."):
-            value = value[part]
+        value = result.at(key)
         ok = value == json.loads(expected)
         print(f"{key} = {value!r} (expected {expected}) {'ok' if ok else 'MISMATCH'}")
         failed |= not ok

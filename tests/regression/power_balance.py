@@ -10,9 +10,11 @@ the contact terms and the assembly. |F| <= 1e-10 at convergence bounds the power
 
 usage: power_balance.py FLOWFORM CASE.xml OUTDIR TOOL [--set P=V ...]
 """
-import json
-import subprocess
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
+from flowform_tools import launcher  # noqa: E402
 
 TOL = 1e-8
 
@@ -22,15 +24,13 @@ def main():
     extra = sys.argv[5:]
     responses = {"plastic": "Plastic Power", "friction": "Friction Power", "penalty": "Penalty Power",
                  "stabilization": "Stabilization Power", "tool_power": "Boundary Power"}
-    args = [flowform, case, "-o", outdir, "--quiet", "--set", f"Responses/tool_power/Boundary={tool}"] + extra
-    for name, kind in responses.items():
-        args += ["--set", f"Responses/{name}/Type={kind}"]
-    status = subprocess.run(args).returncode
-    if status != 0:
-        print(f"flowform exited {status}")
+    sets = [f"Responses/tool_power/Boundary={tool}"] + [f"Responses/{name}/Type={kind}"
+                                                         for name, kind in responses.items()]
+    run = launcher.run(flowform, case, outdir, sets[:1], args=extra + launcher.set_args(sets[1:]), quiet=True)
+    if run.status != 0:
+        print(f"flowform exited {run.status}")
         return 1
-    with open(f"{outdir}/summary.json") as f:
-        values = json.load(f)["functionals"]
+    values = run.summary["functionals"]
     dissipated = sum(values[n] for n in ("plastic", "friction", "penalty", "stabilization"))
     mismatch = abs(values["tool_power"] - dissipated) / abs(values["tool_power"])
     for name in responses:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Whole-run checks of the sensitivity analysis (SPEC §4, docs/sensitivity.md).
+"""Whole-run checks of the sensitivity analysis (docs/theory.md §4, docs/sensitivity.md).
 
 usage: sensitivity_checks.py SUBCOMMAND FLOWFORM SOURCE_DIR WORK_DIR [options]
 
@@ -8,15 +8,16 @@ subcommands
               built-in central differences, relative difference (max norm) < 1e-5; one
               factorization for both parameters and one back-substitution each; the fields in
               solution.h5 and the columns in the boundary CSVs.
-  extrusion   xml/extrusion.xml at ν in --nu (default 0.05,0.1,0.3): dF/dν and d(mean ram
-              pressure)/dν vs central differences < 1e-5 where no node switches (a switch must
-              be flagged one_sided with the nodes listed, and is then excluded).
+  extrusion   xml/extrusion.xml at ν in --nu (default 0.05,0.1,0.3) on every contact wall of the
+              case: dF/dν and d(mean ram pressure)/dν vs central differences < 1e-5 where no
+              node switches (a switch must be flagged one_sided with the nodes listed, and is
+              then excluded).
   external    dF/dν by DDM against a central difference of two independent full runs at ν ± 2e-4
               (from scratch, the whole contact loop each), at ν in --nu; both must end in the
               base run's contact state.
-  one-sided   the extrusion at ν = 0.05 with δ = 8e-4: a container node goes from slip to stick
-              at ν + δ; the entries must say one_sided, list that node, and name the side on
-              which nothing changed.
+  one-sided   the extrusion at ν = 0.05 with δ = 8e-4: a node of the first contact wall (the
+              container) goes from slip to stick at ν + δ; the entries must say one_sided, list
+              that node, and name the side on which nothing changed.
   no-work     the channel without a Sensitivity list, with one (DDM only), and with an empty
               Parameters array: the first and last do no sensitivity work (no factorization,
               solve, field or column beyond the flow solve's), the second exactly one
@@ -30,25 +31,20 @@ on σ0, n) the truncation measured is <= 1.2e-6 (dF/dν) and <= 2e-7 (channel fi
 holds with a margin of 8 or more.
 """
 import argparse
-import json
 import os
-import subprocess
 import sys
 
-import h5py
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
+from flowform_tools import case as case_module, csvio, h5io, launcher, summary  # noqa: E402
 
 TOL = 1e-5
 
 
 def run(flowform, case, outdir, sets, expect=0):
-    cmd = [flowform, case, "-o", outdir, "--quiet"]
-    for s in sets:
-        cmd += ["--set", s]
-    status = subprocess.run(cmd).returncode
-    if status != expect:
-        raise SystemExit(f"flowform exited {status}, expected {expect}: {' '.join(cmd)}")
-    with open(os.path.join(outdir, "summary.json")) as f:
-        return json.load(f)
+    r = launcher.run(flowform, case, outdir, sets, quiet=True)
+    if r.status != expect:
+        raise SystemExit(f"flowform exited {r.status}, expected {expect}: {launcher.command_line(r.command)}")
+    return summary.load(outdir, missing_ok=False)
 
 
 class Checker:
@@ -60,9 +56,13 @@ class Checker:
         self.failed += 0 if ok else 1
 
 
-def csv_header(path):
-    with open(path) as f:
-        return f.readline().strip().split(",")
+def extrusion_case(args):
+    """xml/extrusion.xml, its Contact Wall groups, and its tool force and mean tool pressure responses."""
+    case = os.path.join(args.source, "xml", "extrusion.xml")
+    scene = case_module.Case(case)
+    force = scene.tool_force()
+    pressure = scene.response("Mean Pressure", boundary=scene.tool_boundary())
+    return case, scene.contact_walls(), force, pressure
 
 
 def channel(args, c):
@@ -79,22 +79,22 @@ def channel(args, c):
             e = s["fd_check"][field][p]
             c.check(not e["one_sided"] and e["rel_diff"] < TOL,
                     f"{field} d/d{p}: |DDM| {e['ddm']:.6g}, |FD| {e['fd']:.6g}, rel. difference {e['rel_diff']:.3e} < {TOL}")
-    with h5py.File(os.path.join(args.work, "channel", "solution.h5")) as h5:
-        names = set(h5["fields"])
+    names = set(h5io.field_names(os.path.join(args.work, "channel")))
     want = {"du_dsigma0", "dp_dsigma0", "du_dn", "dp_dn"}
     c.check(want <= names, f"solution.h5 has {sorted(want)}")
-    header = csv_header(os.path.join(args.work, "channel", "boundary_inlet.csv"))
     want = ["du_t_dsigma0", "du_n_dsigma0", "dp_dsigma0", "du_t_dn", "du_n_dn", "dp_dn"]
-    c.check(all(w in header for w in want), f"boundary CSV columns {want}")
+    for group in case_module.Case(case).groups():
+        header = csvio.header(os.path.join(args.work, "channel"), group)
+        c.check(all(w in header for w in want), f"boundary_{group}.csv columns {want}")
 
 
 def extrusion(args, c):
-    case = os.path.join(args.source, "xml", "extrusion.xml")
+    case, walls, force, pressure = extrusion_case(args)
     for nu in args.nu.split(","):
-        sets = [f"Boundary Conditions/{w}/Friction Coefficient={nu}" for w in ("container", "die_face", "die_land")]
+        sets = [f"Boundary Conditions/{w}/Friction Coefficient={nu}" for w in walls]
         sets += ["Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true"]
         s = run(args.flowform, case, os.path.join(args.work, f"nu_{nu}"), sets)
-        for response in ["ram_force", "ram_pressure"]:
+        for response in [force, pressure]:
             e = s["fd_check"][response]["Friction Coefficient"]
             what = (f"ν = {nu}: d{response}/dν DDM {e['ddm']:.8g}, FD {e['fd']:.8g}, rel. difference "
                     f"{e['rel_diff']:.3e}")
@@ -102,7 +102,7 @@ def extrusion(args, c):
                 c.check(len(e["changed_nodes"]) > 0, what + f" — one-sided, {len(e['changed_nodes'])} node(s) switch (excluded)")
             else:
                 c.check(e["rel_diff"] < TOL, what + f" < {TOL}")
-        c.check(s["sensitivities"]["ram_force"]["Friction Coefficient"] > 0, f"ν = {nu}: the ram force grows with ν")
+        c.check(s["sensitivities"][force]["Friction Coefficient"] > 0, f"ν = {nu}: the ram force grows with ν")
 
 
 def external(args, c):
@@ -118,8 +118,7 @@ def external(args, c):
     also through dα/dν, which the DDM (scales held) leaves out — measured 1.6e-5 (ν = 0.1) and
     1.6e-4 (ν = 0.3) relative, the size of the sticking penalty's effect (docs/sensitivity.md).
     """
-    case = os.path.join(args.source, "xml", "extrusion.xml")
-    walls = ("container", "die_face", "die_land")
+    case, walls, force, _ = extrusion_case(args)
     delta = 2e-4
     for nu in args.nu.split(","):
         runs = {}
@@ -132,34 +131,28 @@ def external(args, c):
             out = os.path.join(args.work, f"nu_{nu}_{tag}")
             runs[tag] = (run(args.flowform, case, out, sets), out)
         def status(out):
-            rows = []
-            for w in walls:
-                with open(os.path.join(out, f"boundary_{w}.csv")) as f:
-                    header = f.readline().strip().split(",")
-                    k = header.index("contact_status")
-                    rows += [line.strip().split(",")[k] for line in f]
-            return rows
+            return [v for w in walls for v in csvio.status_column(out, w)]
         same = status(runs["minus"][1]) == status(runs["plus"][1]) == status(runs["base"][1])
         c.check(same, f"ν = {nu}: the two full runs at ν ± {delta} end in the base run's contact state")
-        fm, fp = runs["minus"][0]["functionals"]["ram_force"], runs["plus"][0]["functionals"]["ram_force"]
+        fm, fp = runs["minus"][0]["functionals"][force], runs["plus"][0]["functionals"][force]
         fd = (fp - fm) / (2 * delta)
-        ddm = runs["base"][0]["sensitivities"]["ram_force"]["Friction Coefficient"]
+        ddm = runs["base"][0]["sensitivities"][force]["Friction Coefficient"]
         rel = abs(ddm - fd) / abs(fd)
         c.check(rel < TOL, f"ν = {nu}: dF/dν DDM {ddm:.8g} vs central difference of two full runs {fd:.8g}: "
                            f"rel. difference {rel:.3e} < {TOL}")
 
 
 def one_sided(args, c):
-    case = os.path.join(args.source, "xml", "extrusion.xml")
-    sets = [f"Boundary Conditions/{w}/Friction Coefficient=0.05" for w in ("container", "die_face", "die_land")]
+    case, walls, force, _ = extrusion_case(args)
+    sets = [f"Boundary Conditions/{w}/Friction Coefficient=0.05" for w in walls]
     sets += ["Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true",
              "Sensitivity/Finite Difference Step=8e-4"]
     s = run(args.flowform, case, os.path.join(args.work, "one_sided"), sets)
-    e = s["fd_check"]["ram_force"]["Friction Coefficient"]
+    e = s["fd_check"][force]["Friction Coefficient"]
     c.check(e["one_sided"] and e["status"] == "one_sided", "the entry says one_sided")
     changed = e["changed_nodes"]
-    c.check(any(n["wall"] == "container" and n["base"].startswith("slip") and n["plus"] == "stick" for n in changed),
-            f"it lists the container node that sticks at ν + δ: {changed}")
+    c.check(any(n["wall"] == walls[0] and n["base"].startswith("slip") and n["plus"] == "stick" for n in changed),
+            f"it lists the {walls[0]} node that sticks at ν + δ: {changed}")
     c.check(e.get("consistent_side") == "minus" and "rel_diff_one_sided" in e,
             f"and the side where nothing changed (minus), with the backward difference "
             f"{e['fd_backward']:.8g} vs DDM {e['ddm']:.8g}")
@@ -182,10 +175,9 @@ def no_work(args, c):
                 f"{name}: no sensitivities, no fd_check, no sensitivity time")
         c.check(s["linear_solver"] == base["linear_solver"], f"{name}: the same linear-solver counts as without")
         out = os.path.join(args.work, "none" if s is base else "empty")
-        with h5py.File(os.path.join(out, "solution.h5")) as h5:
-            extra = [n for n in h5["fields"] if n.startswith(("du_", "dp_"))]
-        header = csv_header(os.path.join(out, "boundary_inlet.csv"))
-        c.check(not extra and not any(h.startswith(("du_", "dp_")) for h in header),
+        extra = [n for n in h5io.field_names(out) if n.startswith(("du_", "dp_"))]
+        columns = [h for group in case_module.Case(case).groups() for h in csvio.header(out, group)]
+        c.check(not extra and not any(h.startswith(("du_", "dp_")) for h in columns),
                 f"{name}: no sensitivity fields or columns")
     f = ddm["linear_solver"]["factorizations"] - base["linear_solver"]["factorizations"]
     n = ddm["linear_solver"]["solves"] - base["linear_solver"]["solves"]
