@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots of the extrusion scene (SPEC §6.2, docs/extrusion.md) from flowform's outputs.
+"""Plots of the extrusion scene (docs/theory.md §6.2, docs/extrusion.md) from flowform's outputs.
 
   force_vs_nu.png      ram force (and the ∫p ds check), ram pressure and dead zone against
                        the swept value, from SWEEP/sweep.csv (scripts/sweep_friction.py);
@@ -22,170 +22,87 @@ usage:
              Friction Coefficient from its summary.json, else with its name
   --map-run  the run whose fields are mapped (default: the converged run with ν nearest 0.1)
   --out      where the PNGs go (default: the sweep directory, else the current directory)
+  --walls    the walls of the wall plot, in flow order (default: the runs' Contact Wall groups,
+             chained from the boundary of their Boundary Force response, the ram)
   --mesh     draw the mesh edges on the strain-rate map
   --xlabel   x label of force_vs_nu.png (default "friction coefficient ν")
 
 Each CSV boundary_<wall>.csv runs counter-clockwise (material on its left); the walls are
 oriented here by matching their end points, so the order of the --walls list (the flow
 order) is all that matters, in plane strain and in the transposed axisymmetric section.
-Needs numpy, matplotlib, h5py (Debian: python3-numpy python3-matplotlib python3-h5py).
+Response names (the force, pressure and dead-zone panels) are taken from the runs'
+summary.json by their Type (Boundary Force, Mean Pressure, Dead Zone).
+Needs numpy, matplotlib, h5py (Debian: python3-numpy python3-matplotlib python3-h5py) and
+python/flowform_tools (plotting helpers).
 """
 import argparse
-import csv
-import json
 import os
 import sys
 
 import numpy as np
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from flowform_tools import plotting  # noqa: E402
+from flowform_tools.case import Scene  # noqa: E402
+from flowform_tools.plotting import chain_walls, read_solution, run_summary as read_summary, triangulate  # noqa: E402
+from flowform_tools.sweep import num, read as read_sweep  # noqa: E402
+
+plt = plotting.pyplot()
 import matplotlib.tri as mtri  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
 
-WALLS = ("container", "die_face", "die_land")
 
-
-# ------------------------------------------------------------------------------------------
-# reading
-
-def read_sweep(sweep_dir):
-    path = os.path.join(sweep_dir, "sweep.csv")
-    if not os.path.exists(path):
-        return None
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    for r in rows:
-        r["dir"] = os.path.join(sweep_dir, r["dir"])
-    return rows
-
-
-def num(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return float("nan")
-
-
-def read_summary(run_dir):
-    path = os.path.join(run_dir, "summary.json")
-    if not os.path.exists(path):
-        return {}
-    with open(path) as f:
-        return json.load(f)
-
-
-def run_label(run_dir, sweep_rows):
+def run_label(run_dir, sweep_rows, walls=None):
+    """"ν = <value>" from sweep.csv, else from the first wall's Friction Coefficient in the
+    run's summary.json, else the directory name; and the value (nan if none)."""
     for r in sweep_rows or []:
         if os.path.abspath(r["dir"]) == os.path.abspath(run_dir):
             return "ν = %g" % num(r["nu"]), num(r["nu"])
-    bc = read_summary(run_dir).get("parameters", {}).get("Boundary Conditions", {})
-    nu = (bc.get("container") or {}).get("Friction Coefficient")
+    scene = Scene.from_summary(read_summary(run_dir))
+    first = (walls or scene.contact_walls() or [None])[0]
+    nu = scene.group(first).get("Friction Coefficient") if first else None
     if nu is not None:
         return "ν = %g" % nu, float(nu)
     return os.path.basename(os.path.normpath(run_dir)), float("nan")
 
 
-def read_wall(run_dir, wall):
-    path = os.path.join(run_dir, "boundary_%s.csv" % wall)
-    if not os.path.exists(path):
-        return None
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        return None
-    return {k: np.array([num(r[k]) for r in rows]) for k in rows[0]}
-
-
-def chain_walls(run_dir, walls):
-    """The walls in the given (flow) order, each oriented so that it starts where the
-    previous one ends; returns [(wall, S, data)] with S the cumulative arc length and
-    data['u_t'] the velocity along the chain direction."""
-    curves = [(w, read_wall(run_dir, w)) for w in walls]
-    curves = [(w, d) for w, d in curves if d is not None]
-    if not curves:
-        return []
-
-    def ends(d):
-        return (np.array([d["x"][0], d["y"][0]]), np.array([d["x"][-1], d["y"][-1]]))
-
-    def flip(d):
-        out = {k: v[::-1].copy() for k, v in d.items()}
-        out["s"] = d["s"][-1] - out["s"]
-        out["u_t"] = -out["u_t"]  # the tangent turns round; u_n keeps its sign
-        return out
-
-    oriented = []
-    for i, (w, d) in enumerate(curves):
-        a, b = ends(d)
-        if i == 0:
-            if len(curves) > 1:
-                na, nb = ends(curves[1][1])
-                # the end shared with the next wall must come last
-                da = min(np.linalg.norm(a - na), np.linalg.norm(a - nb))
-                db = min(np.linalg.norm(b - na), np.linalg.norm(b - nb))
-                if da < db:
-                    d = flip(d)
-        else:
-            prev_end = ends(oriented[-1][1])[1]
-            if np.linalg.norm(b - prev_end) < np.linalg.norm(a - prev_end):
-                d = flip(d)
-            gap = np.linalg.norm(ends(d)[0] - prev_end)
-            if gap > 1e-9 * (1 + np.linalg.norm(prev_end)):
-                print("plot_extrusion: warning: %s does not start where %s ends (gap %.3g) in %s"
-                      % (w, oriented[-1][0], gap, run_dir), file=sys.stderr)
-        oriented.append((w, d))
-    out, offset = [], 0.0
-    for w, d in oriented:
-        out.append((w, offset + d["s"], d))
-        offset += d["s"][-1]
-    return out
-
-
-def read_solution(run_dir):
-    import h5py
-    with h5py.File(os.path.join(run_dir, "solution.h5"), "r") as f:
-        xy = np.asarray(f["mesh/coordinates"])[:, :2]
-        topo = np.asarray(f["mesh/topology"], dtype=np.int64)
-        fields = {name: np.asarray(f["fields/" + name]) for name in f["fields"]}
-    return xy, topo, fields
-
-
-def triangulate(xy, topo):
-    """matplotlib Triangulation; quadrilaterals are split along their 0-2 diagonal. Returns
-    the triangulation and, per triangle, the index of its cell."""
-    if topo.shape[1] == 3:
-        tris, cell = topo, np.arange(len(topo))
-    elif topo.shape[1] == 4:
-        tris = np.vstack([topo[:, [0, 1, 2]], topo[:, [0, 2, 3]]])
-        cell = np.concatenate([np.arange(len(topo))] * 2)
-    else:
-        raise ValueError("topology with %d nodes per cell" % topo.shape[1])
-    return mtri.Triangulation(xy[:, 0], xy[:, 1], tris), cell
+def response_names(run_dir):
+    """Role -> response name of a run: force (Boundary Force), pressure (Mean Pressure on the
+    force's boundary), dead_zone (Dead Zone); a role the case lacks is left out."""
+    scene = Scene.from_summary(read_summary(run_dir))
+    out = {}
+    force = scene.response("Boundary Force", required=False)
+    if force:
+        out["force"] = force
+        out["pressure"] = scene.response("Mean Pressure", boundary=scene.tool_boundary(), required=False)
+    out["dead_zone"] = scene.response("Dead Zone", required=False)
+    return {k: v for k, v in out.items() if v}
 
 
 # ------------------------------------------------------------------------------------------
 # plots
 
 def plot_force(rows, out_png, xlabel):
-    axisym = any(read_summary(r["dir"]).get("parameters", {}).get("Problem", {})
-                 .get("Geometry") == "Axisymmetric" for r in rows[:1])
+    first = next((r["dir"] for r in rows if read_summary(r["dir"])), rows[0]["dir"])
+    axisym = Scene.from_summary(read_summary(first)).axisymmetric
+    names = response_names(first)  # e.g. force: ram_force, pressure: ram_pressure, dead_zone
+    force = names.get("force", "ram_force")
     nu = np.array([num(r["nu"]) for r in rows])
     conv = np.array([r.get("converged") == "1" for r in rows])
-    have = [k for k in ("ram_force", "ram_pressure", "dead_zone")
-            if any(np.isfinite(num(r.get(k))) for r in rows)]
-    check = np.array([num(r.get("ram_force_p")) for r in rows])
-    panels = have or ["ram_force_p"]
+    have = [names[k] for k in ("force", "pressure", "dead_zone")
+            if k in names and any(np.isfinite(num(r.get(names[k]))) for r in rows)]
+    check = np.array([num(r.get(force + "_p")) for r in rows])
+    panels = have or [force + "_p"]
     fig, axes = plt.subplots(1, len(panels), figsize=(4.6 * len(panels), 3.8), squeeze=False)
+    pressure, dead_zone = names.get("pressure"), names.get("dead_zone")
     if axisym:
-        titles = {"ram_force": "ram force (whole ram, 2πr)", "ram_force_p": "ram force ∫ p 2πr ds",
-                  "ram_pressure": "mean ram pressure", "dead_zone": "dead zone volume"}
+        titles = {force: "ram force (whole ram, 2πr)", force + "_p": "ram force ∫ p 2πr ds",
+                  pressure: "mean ram pressure", dead_zone: "dead zone volume"}
     else:
-        titles = {"ram_force": "ram force (per unit depth, half section)",
-                  "ram_force_p": "ram force ∫ p ds",
-                  "ram_pressure": "mean ram pressure", "dead_zone": "dead zone area"}
+        titles = {force: "ram force (per unit depth, half section)",
+                  force + "_p": "ram force ∫ p ds",
+                  pressure: "mean ram pressure", dead_zone: "dead zone area"}
     order = np.argsort(nu)
     for ax, key in zip(axes[0], panels):
         y = np.array([num(r.get(key)) for r in rows])
@@ -193,15 +110,13 @@ def plot_force(rows, out_png, xlabel):
         ax.plot(nu[conv], y[conv], "o", color="C0", label=key)
         if (~conv).any():
             ax.plot(nu[~conv], y[~conv], "o", mfc="none", mec="red", label="not converged")
-        if key == "ram_force" and np.isfinite(check).any():
+        if key == force and np.isfinite(check).any():
             ax.plot(nu[order], check[order], "--", color="C1", lw=1, label="∫ p %sds on the ram" % ("2πr " if axisym else ""))
         ax.set_xlabel(xlabel)
         ax.set_title(titles.get(key, key), fontsize=10)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out_png, dpi=130)
-    plt.close(fig)
+    plotting.save(fig, out_png, dpi=130)
 
 
 def plot_walls(runs, walls, out_png):
@@ -244,9 +159,7 @@ def plot_walls(runs, walls, out_png):
     ax_p.set_xlabel("arc length along the walls from the ram corner ("
                     + " → ".join(walls) + ")")
     ax_u.legend(fontsize=8, ncol=2)
-    fig.tight_layout()
-    fig.savefig(out_png, dpi=130)
-    plt.close(fig)
+    plotting.save(fig, out_png, dpi=130)
 
 
 def plot_fields(run_dir, label, out_png, show_mesh, axisymmetric):
@@ -297,9 +210,7 @@ def plot_fields(run_dir, label, out_png, show_mesh, axisymmetric):
         ax.set_ylabel(names[1])
         ax.set_xlim(xy[:, 0].min(), xy[:, 0].max())
         ax.set_ylim(xy[:, 1].min(), xy[:, 1].max())
-    fig.tight_layout()
-    fig.savefig(out_png, dpi=140)
-    plt.close(fig)
+    plotting.save(fig, out_png, dpi=140)
 
 
 # ------------------------------------------------------------------------------------------
@@ -312,12 +223,10 @@ def main():
     ap.add_argument("--runs", nargs="+")
     ap.add_argument("--map-run")
     ap.add_argument("--out")
-    ap.add_argument("--walls", default=",".join(WALLS))
+    ap.add_argument("--walls", default=None)
     ap.add_argument("--mesh", action="store_true")
     ap.add_argument("--xlabel", default="friction coefficient ν")
     args = ap.parse_args()
-    walls = [w for w in args.walls.split(",") if w]
-
     rows = read_sweep(args.sweep)
     if rows is None and not args.runs and not args.map_run:
         sys.exit("plot_extrusion: no %s/sweep.csv; give --sweep, --runs or --map-run"
@@ -335,9 +244,13 @@ def main():
         run_dirs = args.runs
     else:
         run_dirs = [r["dir"] for r in rows or [] if r["exit_status"] in ("0", "3")]
+    if args.walls:
+        walls = [w for w in args.walls.split(",") if w]
+    else:  # the runs' contact walls in flow order (container, die_face, die_land)
+        walls = next((plotting.walls_of_run(d) for d in run_dirs if read_summary(d)), [])
     runs = []
     for d in run_dirs:
-        label, nu = run_label(d, rows)
+        label, nu = run_label(d, rows, walls)
         conv = bool(read_summary(d).get("converged", False))
         runs.append((d, label, conv, nu))
     runs.sort(key=lambda r: (np.isnan(r[3]), r[3]))
@@ -351,9 +264,8 @@ def main():
         converged = [r for r in runs if r[2]] or runs
         map_run = min(converged, key=lambda r: abs(r[3] - 0.1) if np.isfinite(r[3]) else 1e9)[0]
     if map_run:
-        label, _ = run_label(map_run, rows)
-        summary = read_summary(map_run)
-        axisym = summary.get("parameters", {}).get("Problem", {}).get("Geometry") == "Axisymmetric"
+        label, _ = run_label(map_run, rows, walls)
+        axisym = plotting.is_axisymmetric(map_run)
         tag = label.replace("ν = ", "nu_").replace(" ", "_")
         png = os.path.join(out, "fields_%s.png" % tag)
         plot_fields(map_run, label, png, args.mesh, axisym)

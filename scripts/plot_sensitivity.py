@@ -12,8 +12,12 @@ from a friction sweep run with sensitivities and their finite-difference check:
                           the material flow), DDM full and FD dotted, one colour per ν
 
 usage: scripts/plot_sensitivity.py [--sweep out/sweep] [--out DIR] [--parameter NAME]
-                                   [--response ram_force] [--walls container,die_face,die_land]
-Needs numpy, matplotlib (Debian's /usr/bin/python3).
+                                   [--response NAME] [--walls W1,W2,...]
+
+  --response  default: the runs' Boundary Force response (ram_force)
+  --walls     default: the runs' Contact Wall groups in flow order (container, die_face,
+              die_land), as in scripts/plot_extrusion.py
+Needs numpy, matplotlib (Debian's /usr/bin/python3) and python/flowform_tools.
 """
 import argparse
 import os
@@ -21,13 +25,13 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_extrusion import WALLS, chain_walls, num, read_summary, read_sweep, read_wall  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from flowform_tools import plotting  # noqa: E402
+from flowform_tools.case import Scene  # noqa: E402
+from flowform_tools.plotting import oriented_column, run_summary as read_summary  # noqa: E402
+from flowform_tools.sweep import num, read as read_sweep  # noqa: E402
 
-import matplotlib  # noqa: E402
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = plotting.pyplot()
 
 
 def short(parameter):
@@ -74,27 +78,8 @@ def plot_force(rows, parameter, response, out_png):
     ax_d.set_ylabel("d %s / d%s" % (response, short(parameter)))
     ax_d.set_xlabel("friction coefficient ν")
     ax_d.legend(fontsize=9)
-    for ax in (ax_f, ax_d):
-        ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(out_png, dpi=130)
-    plt.close(fig)
-
-
-def oriented_column(run_dir, walls, column):
-    """The column along the chained walls, its sign following chain_walls' orientation of
-    u_t (a tangential component turns round with the wall)."""
-    chain = chain_walls(run_dir, walls)
-    S, values = [], []
-    for w, s, d in chain:
-        raw = read_wall(run_dir, w)
-        if column not in raw:
-            return None, None
-        flipped = not np.isclose(raw["x"][0], d["x"][0]) or not np.isclose(raw["y"][0], d["y"][0])
-        v = raw[column][::-1] if flipped else raw[column]
-        S.append(s)
-        values.append(-v if flipped else v)
-    return np.concatenate(S), np.concatenate(values)
+    plotting.grid(ax_f, ax_d)
+    plotting.save(fig, out_png, dpi=130)
 
 
 def plot_walls(rows, parameter, walls, out_png):
@@ -119,9 +104,7 @@ def plot_walls(rows, parameter, walls, out_png):
     ax.set_ylabel("du_t / d%s along the flow" % short(parameter))
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, ncol=2)
-    fig.tight_layout()
-    fig.savefig(out_png, dpi=130)
-    plt.close(fig)
+    plotting.save(fig, out_png, dpi=130)
 
 
 def main():
@@ -129,8 +112,8 @@ def main():
     parser.add_argument("--sweep", default=os.path.join("out", "sweep"))
     parser.add_argument("--out", default=None)
     parser.add_argument("--parameter", default="Friction Coefficient")
-    parser.add_argument("--response", default="ram_force")
-    parser.add_argument("--walls", default=",".join(WALLS))
+    parser.add_argument("--response", default=None)
+    parser.add_argument("--walls", default=None)
     args = parser.parse_args()
     rows = read_sweep(args.sweep)
     if not rows:
@@ -138,8 +121,10 @@ def main():
         return 2
     out = args.out or args.sweep
     os.makedirs(out, exist_ok=True)
-    walls = args.walls.split(",")
-    plot_force(rows, args.parameter, args.response, os.path.join(out, "force_sensitivity.png"))
+    first = next((r["dir"] for r in rows if read_summary(r["dir"])), None)
+    walls = args.walls.split(",") if args.walls else (plotting.walls_of_run(first) if first else [])
+    response = args.response or (Scene.from_summary(read_summary(first)).tool_force() if first else "ram_force")
+    plot_force(rows, args.parameter, response, os.path.join(out, "force_sensitivity.png"))
     plot_walls(rows, args.parameter, walls, os.path.join(out, "wall_sensitivity.png"))
     print("plots in %s" % out)
     return 0

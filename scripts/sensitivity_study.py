@@ -14,21 +14,32 @@ Each study prints a markdown table; the runs stay under --out (one directory eac
   axisym    axisymmetric extrusion: every parameter and response
 """
 import argparse
-import json
 import os
-import subprocess
+import sys
 
-WALLS = ("container", "die_face", "die_land")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from flowform_tools import REPO, default_flowform, launcher, summary  # noqa: E402
+from flowform_tools.case import Case  # noqa: E402
 
 
 def run(args, case, name, sets):
     out = os.path.join(args.out, name)
-    cmd = [args.flowform, os.path.join(args.root, "xml", case), "-o", out, "--quiet"]
-    for s in sets:
-        cmd += ["--set", s]
-    subprocess.run(cmd, check=False)
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+    launcher.run(args.flowform, os.path.join(args.root, "xml", case), out, sets, quiet=True)
+    return summary.load(out, missing_ok=False)
+
+
+def scene(args, case="extrusion.xml"):
+    return Case(os.path.join(args.root, "xml", case))
+
+
+def walls(args, case="extrusion.xml"):
+    """The Contact Wall groups of a case in xml/ (the extrusion's container, die_face, die_land)."""
+    return scene(args, case).contact_walls()
+
+
+def force(args, case="extrusion.xml"):
+    """The case's tool force response (ram_force)."""
+    return scene(args, case).tool_force()
 
 
 def check(*params, step=None, extra=()):
@@ -46,12 +57,12 @@ def study_nu(args):
     print("\n| ν | F | dF/dν DDM | dF/dν FD | rel. diff F | rel. diff u | rel. diff p | switching nodes |")
     print("|---|---|---|---|---|---|---|---|")
     for nu in ["0", "0.05", "0.1", "0.2", "0.3", "0.5"]:
-        sets = [f"Boundary Conditions/{w}/Friction Coefficient={nu}" for w in WALLS]
+        sets = [f"Boundary Conditions/{w}/Friction Coefficient={nu}" for w in walls(args)]
         s = run(args, "extrusion.xml", f"nu_{nu}", check("Friction Coefficient", extra=sets))
-        e = s["fd_check"]["ram_force"]["Friction Coefficient"]
+        e = s["fd_check"][force(args)]["Friction Coefficient"]
         u = s["fd_check"]["velocity_field"]["Friction Coefficient"]
         p = s["fd_check"]["pressure_field"]["Friction Coefficient"]
-        print(f"| {nu} | {s['functionals']['ram_force']:.5f} | {e['ddm']:.7f} | {e['fd']:.7f} | {e['rel_diff']:.1e}{flag(e)} "
+        print(f"| {nu} | {s['functionals'][force(args)]:.5f} | {e['ddm']:.7f} | {e['fd']:.7f} | {e['rel_diff']:.1e}{flag(e)} "
               f"| {u['rel_diff']:.1e} | {p['rel_diff']:.1e} | {len(e['changed_nodes'])} |")
 
 
@@ -62,12 +73,12 @@ def study_step(args):
         s = run(args, "extrusion.xml", f"step_ext_{step}",
                 check("Friction Coefficient", "Yield Stress", "Rate Exponent", step=step))
         c = run(args, "channel.xml", f"step_ch_{step}", check("Yield Stress", "Rate Exponent", step=step))
-        f = s["fd_check"]
+        f, F = s["fd_check"], force(args)
 
         def cell(entry):
             return f"{entry['rel_diff']:.1e}{flag(entry)}"
-        print(f"| {step} | {cell(f['ram_force']['Friction Coefficient'])} | {cell(f['velocity_field']['Friction Coefficient'])} "
-              f"| {cell(f['ram_force']['Yield Stress'])} | {cell(f['ram_force']['Rate Exponent'])} "
+        print(f"| {step} | {cell(f[F]['Friction Coefficient'])} | {cell(f['velocity_field']['Friction Coefficient'])} "
+              f"| {cell(f[F]['Yield Stress'])} | {cell(f[F]['Rate Exponent'])} "
               f"| {cell(c['fd_check']['velocity_field']['Yield Stress'])} "
               f"| {cell(c['fd_check']['velocity_field']['Rate Exponent'])} "
               f"| {cell(c['fd_check']['pressure_field']['Rate Exponent'])} |")
@@ -84,7 +95,7 @@ def study_jacobian(args):
         b = run(args, "extrusion.xml", f"jac_{tol}_last", tols + ["Sensitivity/Jacobian=Last Newton Iterate"])
         diffs = []
         for p in params:
-            x, y = a["sensitivities"]["ram_force"][p], b["sensitivities"]["ram_force"][p]
+            x, y = a["sensitivities"][force(args)][p], b["sensitivities"][force(args)][p]
             diffs.append(f"{abs(x - y) / abs(x):.1e}")
         print(f"| {tol} | {b['sensitivity']['jacobian_offset']:.1e} | {a['sensitivity']['factorizations']} / "
               f"{b['sensitivity']['factorizations']} | " + " | ".join(diffs) + " |")
@@ -99,29 +110,32 @@ def study_scales(args):
               check(*params, extra=["Sensitivity/Finite Difference Scales=Recomputed"]))
     for p in params:
         row = []
-        for r in ["ram_force", "velocity_field", "pressure_field"]:
+        for r in [force(args), "velocity_field", "pressure_field"]:
             row += [f"{held['fd_check'][r][p]['rel_diff']:.1e}", f"{rec['fd_check'][r][p]['rel_diff']:.1e}"]
         print(f"| {p} | " + " | ".join(row) + " |")
 
 
 def study_axisym(args):
-    params = ["Friction Coefficient", "Friction Coefficient:die_land", "Yield Stress", "Rate Constant", "Rate Exponent"]
+    case = scene(args, "extrusion_axisym.xml")
+    F = case.tool_force()
+    params = ["Friction Coefficient", f"Friction Coefficient:{case.contact_walls()[-1]}", "Yield Stress",
+              "Rate Constant", "Rate Exponent"]
     s = run(args, "extrusion_axisym.xml", "axisym", check(*params))
-    responses = ["ram_force", "ram_pressure", "velocity_field", "pressure_field"]
+    responses = [F, case.response("Mean Pressure", boundary=case.tool_boundary()), "velocity_field", "pressure_field"]
     print("\n| h | dF/dh (DDM) | " + " | ".join(responses) + " |")
     print("|---|---|" + "---|" * len(responses))
     for p in params:
         cells = [f"{s['fd_check'][r][p]['rel_diff']:.1e}{flag(s['fd_check'][r][p])}" for r in responses]
-        print(f"| {p} | {s['sensitivities']['ram_force'][p]:.6g} | " + " | ".join(cells) + " |")
+        print(f"| {p} | {s['sensitivities'][F][p]:.6g} | " + " | ".join(cells) + " |")
     t = s["timings"]
     print(f"\ntimes: flow solve {t['solve']:.2f} s, DDM {t['sensitivity_ddm']:.3f} s "
           f"({len(params)} parameters), FD check {t['finite_difference_check']:.2f} s")
 
 
 def main():
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    root = REPO
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--flowform", default=os.path.join(root, "build", "flowform"))
+    parser.add_argument("--flowform", default=default_flowform())
     parser.add_argument("--out", default=os.path.join("out", "sensitivity_study"))
     parser.add_argument("--only", default="nu,step,jacobian,scales,axisym")
     args = parser.parse_args()
