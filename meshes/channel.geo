@@ -1,4 +1,4 @@
-// Channel [0,4] x [-1,1] of SPEC §6.1 (verification against the exact fully developed
+// Channel [0,4] x [-1,1] of docs/theory.md §6.1 (verification against the exact fully developed
 // profile). Structured: N cells across the height 2 and 2N along the length 4, so the cells
 // are squares of side 2/N (or those squares cut by one diagonal, alternating direction).
 //

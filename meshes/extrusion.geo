@@ -1,4 +1,4 @@
-// Plane-strain extrusion through a flat (90°) die, SPEC §6.2 (paper §4.1): the upper half of
+// Plane-strain extrusion through a flat (90°) die, docs/theory.md §6.2 (paper §4.1): the upper half of
 // the section, cut by the symmetry line y = 0. One L-shaped surface:
 //
 //        y

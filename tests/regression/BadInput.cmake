@@ -1,5 +1,5 @@
 # Bad-input regression tests: flowform must exit with status 2, say on stderr which file,
-# parameter or group is wrong, and write nothing (SPEC §5). Plus one good tiny case that
+# parameter or group is wrong, and write nothing (docs/theory.md §5). Plus one good tiny case that
 # must exit 0 with summary.json saying converged.
 #
 # Most cases are the small channel (bad_input/channel_small.xml, N = 2) broken by --set;
@@ -114,7 +114,7 @@ flowform_exit_test(bad_input_cutoff_negative CASE channel_small.xml
   SET "Material/Strain Rate Cutoff=-1e-3"
   CONTAINS "Strain Rate Cutoff")
 
-# --- sensitivity (SPEC §4) ----------------------------------------------------------------------
+# --- sensitivity (docs/theory.md §4) ---------------------------------------------------------
 flowform_exit_test(bad_input_sensitivity_unknown_parameter CASE channel_small.xml
   SET "Sensitivity/Parameters={Yield Stres}"
   CONTAINS "Yield Stres" "'Yield Stress'" "'Rate Exponent'")

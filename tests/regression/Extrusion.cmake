@@ -1,4 +1,4 @@
-# Extrusion scene (SPEC §2, §6.2): contact criteria, power balance, mesh convergence, penalty
+# Extrusion scene (docs/theory.md §2, §6.2): contact criteria, power balance, mesh convergence, penalty
 # insensitivity, friction limits and the slip-line comparison. Each test is one subcommand of
 # regression/extrusion_checks.py, which runs flowform on xml/extrusion.xml (mesh size h via
 # Geo Parameters, hc = h/4), prints what it measured and one line per check, and keeps the

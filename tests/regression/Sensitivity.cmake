@@ -1,4 +1,4 @@
-# Sensitivity analysis (SPEC §4): DDM against the built-in finite-difference check on the
+# Sensitivity analysis (docs/theory.md §4): DDM against the built-in finite-difference check on the
 # channel (du/dσ0, du/dn) and the extrusion (dF/dν at several ν), the one-sided flag at a
 # stick/slip switch, and what a run without sensitivities costs. `external`: dF/dν against a
 # central difference of two independent full runs, with the walls' Penalty Viscosity fixed

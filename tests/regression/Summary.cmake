@@ -8,14 +8,15 @@ add_test(NAME newtonian_costs_one_solve
                  -- converged=true linear_problem=true newton_iterations=0
                     linear_solver.factorizations=1 linear_solver.solves=1)
 set_tests_properties(newtonian_costs_one_solve PROPERTIES LABELS "regression")
-# n = 40 is reached by continuation (SPEC §6.3), and the result says how.
+# n = 40 (the cutting scene's exponent, docs/theory.md §6.3) is reached by continuation, and the
+# result says how.
 add_test(NAME continuation_reaches_n40
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_summary.py
                  $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR}/xml/channel.xml ${CMAKE_CURRENT_BINARY_DIR}/n40
                  --set "Material/Rate Exponent=40" --set "Mesh/Geo Parameters/N=8"
                  -- converged=true linear_problem=false parameters.Material.Rate\ Exponent=40.0)
 set_tests_properties(continuation_reaches_n40 PROPERTIES LABELS "regression")
-# Not converged: exit status 3, results still written and flagged (SPEC §5). One Newton
+# Not converged: exit status 3, results still written and flagged (docs/theory.md §5). One Newton
 # iteration per stage and no room to halve the continuation step cannot converge n = 5.
 add_test(NAME not_converged_exits_3
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_summary.py --expect-exit 3
