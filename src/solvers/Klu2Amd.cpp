@@ -9,7 +9,6 @@ void Klu2Amd::doFactor(const Teuchos::RCP<const CrsMatrix>& A) {
   if (m_solver.is_null() || m_matrix.get() != A.get()) {
     m_matrix = A;
     m_solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", A);
-    m_transposed = false;
     m_solver->symbolicFactorization();
   }
   try {
@@ -21,13 +20,7 @@ void Klu2Amd::doFactor(const Teuchos::RCP<const CrsMatrix>& A) {
 
 void Klu2Amd::doSolve(const MultiVector& b, MultiVector& x, bool transpose) {
   if (m_solver.is_null()) throw std::logic_error("Klu2Amd::solve before a successful factor()");
-  if (transpose != m_transposed) {
-    // Amesos2's generic control parameter; the factors stay.
-    auto params = Teuchos::rcp(new Teuchos::ParameterList("Amesos2"));
-    params->set("Transpose", transpose);
-    m_solver->setParameters(params);
-    m_transposed = transpose;
-  }
+  if (transpose) throw std::logic_error("Klu2Amd has no transposed solve (supportsTranspose)");
   m_solver->solve(Teuchos::ptrFromRef(x), Teuchos::ptrFromRef(b));
 }
 

@@ -63,14 +63,57 @@ struct Klu2NestedDissection::Impl {
   KluNumeric* numeric = nullptr;
   // The pattern the symbolic analysis belongs to: A's rows with columns as row indices.
   std::vector<KluInt> rowStart, cols;
+  std::vector<KluInt> perm;    ///< the nested-dissection ordering of that pattern
+  std::vector<double> values;  ///< A's values at the last factorization (for the transposed one)
+  // Aᵀ's CSR and its factors, made on the first transposed solve after a factorization.
+  std::vector<KluInt> tStart, tCols, tPosition;  ///< tPosition: the entry of A each entry of Aᵀ is
+  KluSymbolic* tSymbolic = nullptr;
+  KluNumeric* tNumeric = nullptr;
 
   Impl() { KLU2::klu_defaults<double, KluInt>(&common); }
   ~Impl() {
     freeNumeric();
+    freeTransposed();
     if (symbolic) KLU2::klu_free_symbolic<double, KluInt>(&symbolic, &common);
   }
   void freeNumeric() {
     if (numeric) KLU2::klu_free_numeric<double, KluInt>(&numeric, &common);
+    if (tNumeric) KLU2::klu_free_numeric<double, KluInt>(&tNumeric, &common);
+  }
+  void freeTransposed() {
+    if (tSymbolic) KLU2::klu_free_symbolic<double, KluInt>(&tSymbolic, &common);
+    tStart.clear();
+  }
+  /// Factors of Aᵀ's CSR read as CSC, i.e. of A itself: KLU2's transposed solve on them
+  /// gives Aᵀ x = b.
+  void factorTransposed() {
+    const KluInt n = static_cast<KluInt>(rowStart.size()) - 1;
+    if (tStart.empty()) {
+      tStart.assign(n + 1, 0);
+      tCols.resize(cols.size());
+      tPosition.resize(cols.size());
+      for (KluInt c : cols) ++tStart[c + 1];
+      for (KluInt i = 0; i < n; ++i) tStart[i + 1] += tStart[i];
+      std::vector<KluInt> fill(tStart.begin(), tStart.end() - 1);
+      for (KluInt i = 0; i < n; ++i)
+        for (KluInt k = rowStart[i]; k < rowStart[i + 1]; ++k) {
+          tCols[fill[cols[k]]] = i;
+          tPosition[fill[cols[k]]++] = k;
+        }
+      // The pattern of A + Aᵀ is the same, so the same ordering serves.
+      tSymbolic = KLU2::klu_analyze_given<double, KluInt>(n, tStart.data(), tCols.data(), perm.data(), perm.data(),
+                                                           &common);
+      if (tSymbolic == nullptr)
+        throw std::runtime_error("KLU2 symbolic analysis of the transpose failed (status " +
+                                 std::to_string(common.status) + ")");
+    }
+    std::vector<double> tValues(tPosition.size());
+    for (size_t k = 0; k < tPosition.size(); ++k) tValues[k] = values[tPosition[k]];
+    tNumeric = KLU2::klu_factor<double, KluInt>(tStart.data(), tCols.data(), tValues.data(), tSymbolic, &common);
+    if (tNumeric == nullptr || common.status != KLU_OK) {
+      if (tNumeric) KLU2::klu_free_numeric<double, KluInt>(&tNumeric, &common);
+      throw std::runtime_error("KLU2 factorization of the transpose failed (status " + std::to_string(common.status) + ")");
+    }
   }
 };
 
@@ -97,9 +140,11 @@ void Klu2NestedDissection::doFactor(const Teuchos::RCP<const CrsMatrix>& matrix)
   d.freeNumeric();
   if (d.symbolic == nullptr || rowStart != d.rowStart || cols != d.cols) {
     if (d.symbolic) KLU2::klu_free_symbolic<double, KluInt>(&d.symbolic, &d.common);
+    d.freeTransposed();
     d.rowStart = std::move(rowStart);
     d.cols = std::move(cols);
-    std::vector<KluInt> perm = nestedDissection(d.rowStart, d.cols);
+    d.perm = nestedDissection(d.rowStart, d.cols);
+    std::vector<KluInt>& perm = d.perm;
     // The same permutation on both sides keeps the diagonal on the diagonal; no block
     // triangular form (a connected finite-element matrix is one block).
     d.common.btf = 0;
@@ -109,8 +154,9 @@ void Klu2NestedDissection::doFactor(const Teuchos::RCP<const CrsMatrix>& matrix)
       throw std::runtime_error("KLU2 symbolic analysis failed (status " + std::to_string(d.common.status) + ")");
   }
   // CSR read as CSC: KLU2 factors Aᵀ (see the header).
-  d.numeric = KLU2::klu_factor<double, KluInt>(d.rowStart.data(), d.cols.data(),
-                                               const_cast<double*>(local.values.data()), d.symbolic, &d.common);
+  d.values.assign(local.values.data(), local.values.data() + local.values.extent(0));
+  d.numeric = KLU2::klu_factor<double, KluInt>(d.rowStart.data(), d.cols.data(), d.values.data(), d.symbolic,
+                                               &d.common);
   if (d.numeric == nullptr || d.common.status != KLU_OK) {
     d.freeNumeric();
     throw std::runtime_error(std::string("KLU2 numeric factorization failed (") +
@@ -124,12 +170,17 @@ void Klu2NestedDissection::doSolve(const MultiVector& b, MultiVector& x, bool tr
   if (d.numeric == nullptr) throw std::logic_error("Klu2NestedDissection::solve before a successful factor()");
   Tpetra::deep_copy(x, b);
   const KluInt n = static_cast<KluInt>(x.getLocalLength());
+  // A x = b: KLU2's transposed solve on the factors of Aᵀ (CSR read as CSC). Aᵀ x = b: the
+  // same on the factors of A, made on the first such solve after each factorization (one
+  // more numeric factorization). KLU2's plain klu_solve would avoid it, but in Trilinos 13.2
+  // it gives wrong answers on these permuted factors (errors of order 1 in
+  // tests/unit/LinearSolverTest.cpp), so it is not used.
+  if (transpose && d.tNumeric == nullptr) d.factorTransposed();
+  KluNumeric* numeric = transpose ? d.tNumeric : d.numeric;
+  KluSymbolic* symbolic = transpose ? d.tSymbolic : d.symbolic;
   for (size_t j = 0; j < x.getNumVectors(); ++j) {
     auto column = x.getDataNonConst(j);
-    // Aᵀ is factored, so KLU2's transposed solve gives A x = b and its plain one Aᵀ x = b.
-    const bool ok = transpose ? KLU2::klu_solve<double, KluInt>(d.symbolic, d.numeric, n, 1, column.getRawPtr(), &d.common)
-                              : KLU2::klu_tsolve<double, KluInt>(d.symbolic, d.numeric, n, 1, column.getRawPtr(), &d.common);
-    if (!ok)
+    if (!KLU2::klu_tsolve<double, KluInt>(symbolic, numeric, n, 1, column.getRawPtr(), &d.common))
       throw std::runtime_error("KLU2 solve failed (status " + std::to_string(d.common.status) + ")");
   }
 }

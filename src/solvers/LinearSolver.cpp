@@ -2,6 +2,7 @@
 
 #include <Teuchos_TimeMonitor.hpp>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 namespace flowform {
 
@@ -20,6 +21,8 @@ void LinearSolver::solve(const MultiVector& b, MultiVector& x) {
 }
 
 void LinearSolver::solveTranspose(const MultiVector& b, MultiVector& x) {
+  if (!supportsTranspose())
+    throw std::runtime_error("the linear solver " + type() + " (" + ordering() + ") has no transposed solve");
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: linear solve"));
   m_numSolves += static_cast<int>(b.getNumVectors());
   doSolve(b, x, true);

@@ -24,12 +24,13 @@
 #include <set>
 #include <string>
 
-#include "flowform/Assembler.hpp"
-#include "flowform/BoundaryConditions.hpp"
-#include "flowform/DofMap.hpp"
-#include "flowform/FlowModel.hpp"
-#include "flowform/Log.hpp"
-#include "flowform/Simulation.hpp"
+#include "flowform/assembly/Assembler.hpp"
+#include "flowform/bc/BoundaryConditions.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/solvers/FlowModel.hpp"
+#include "flowform/solvers/LinearSolverRegistry.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/drivers/Simulation.hpp"
 #include "StructuredMesh.hpp"
 
 namespace {
@@ -104,7 +105,9 @@ struct Problem {
     bcs = std::make_unique<BoundaryConditions>(bcList, mesh, *dofMap);
     assembler = std::make_unique<Assembler>(mesh, *dofMap, *bcs);
     assembler->setPhysics(physics);
-    model = std::make_unique<FlowModel>(*assembler);
+    Teuchos::ParameterList linear("Linear Solver");
+    linear.validateParametersAndSetDefaults(*validLinearSolverParameters());
+    model = std::make_unique<FlowModel>(*assembler, createLinearSolver(linear, *comm));
   }
   RCP<Vector> vector() const { return Teuchos::rcp(new Vector(dofMap->ownedMap())); }
 };
@@ -135,14 +138,14 @@ ParameterList bcList(const std::vector<Group>& groups) {
   return list;
 }
 
-/// x ← the nodal values of `field` (owned dofs; dof gid = 3 node + component).
-void interpolate(const Mesh& mesh, const Field& field, Vector& x) {
+/// x ← the nodal values of `field` (owned dofs; node and field of a dof from the DofMap).
+void interpolate(const Mesh& mesh, const DofMap& dofMap, const Field& field, Vector& x) {
   auto v = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
   const Map& map = *x.getMap();
   for (size_t i = 0; i < x.getLocalLength(); ++i) {
     const GO g = map.getGlobalElement(static_cast<LO>(i));
-    const auto& xy = mesh.coords[g / kDofsPerNode];
-    v(i, 0) = field(xy[0], xy[1])[g % kDofsPerNode];
+    const auto& xy = mesh.coords[dofMap.nodeOfGlobalDof(g)];
+    v(i, 0) = field(xy[0], xy[1])[dofMap.fieldOfGlobalDof(g)];
   }
 }
 
@@ -196,7 +199,7 @@ TEUCHOS_UNIT_TEST(Assembly, PatchTestInteriorResidualVanishes) {
         const Mesh mesh = makeMesh(type, 6, 5, 0.0, -0.5, 2.0, 1.0, 0.25, 0.3);
         Problem problem(mesh, bcList({}), makePhysics(geometry, material, 0.1, px, py), comm);
         auto x = problem.vector(), f = problem.vector();
-        interpolate(problem.mesh, geometry == Geometry::PlaneStrain ? plane : axi, *x);
+        interpolate(problem.mesh, *problem.dofMap, geometry == Geometry::PlaneStrain ? plane : axi, *x);
         problem.assembler->residual(*x, *f);
 
         const auto onBoundary = boundaryNodes(problem.mesh);
@@ -205,8 +208,8 @@ TEUCHOS_UNIT_TEST(Assembly, PatchTestInteriorResidualVanishes) {
         double boundaryMax = 0.0, interiorMax = 0.0;
         for (size_t i = 0; i < f->getLocalLength(); ++i) {
           const GO g = map.getGlobalElement(static_cast<LO>(i));
-          if (onBoundary.count(g / kDofsPerNode)) {
-            if (g % kDofsPerNode != kP) boundaryMax = std::max(boundaryMax, std::abs(fv(i, 0)));
+          if (onBoundary.count(problem.dofMap->nodeOfGlobalDof(g))) {
+            if (problem.dofMap->fieldOfGlobalDof(g) != kP) boundaryMax = std::max(boundaryMax, std::abs(fv(i, 0)));
           } else {
             interiorMax = std::max(interiorMax, std::abs(fv(i, 0)));
           }
@@ -241,7 +244,7 @@ int newton(Problem& problem, Vector& x, int maxSteps) {
 /// max |x − x_exact| over all dofs and ranks.
 double errorTo(const Problem& problem, const Vector& x, const Field& exact) {
   auto xe = problem.vector();
-  interpolate(problem.mesh, exact, *xe);
+  interpolate(problem.mesh, *problem.dofMap, exact, *xe);
   xe->update(1.0, x, -1.0);
   return xe->normInf();
 }
@@ -362,7 +365,7 @@ TEUCHOS_UNIT_TEST(Assembly, ExactLinearFlowsAreReproduced) {
             for (int c = 0; c < 3; ++c) v[c] += 0.1 * std::sin(2.1 * x + 1.3 * y + c);
             return v;
           };
-          interpolate(problem.mesh, start, *x);
+          interpolate(problem.mesh, *problem.dofMap, start, *x);
           problem.bcs->imposeOnSolution(*x);
           iterations = newton(problem, *x, 10);
           TEST_COMPARE(iterations, <=, 8);
@@ -411,9 +414,9 @@ TEUCHOS_UNIT_TEST(Assembly, JacobianMatchesDirectionalFiniteDifferences) {
                       makePhysics(geometry, kNonlinear, 0.1, 0.3, -0.7), comm);
       auto x = problem.vector(), v = problem.vector(), jv = problem.vector();
       auto xp = problem.vector(), xm = problem.vector(), fp = problem.vector(), fm = problem.vector();
-      interpolate(problem.mesh, kSmooth, *x);
+      interpolate(problem.mesh, *problem.dofMap, kSmooth, *x);
       problem.bcs->imposeOnSolution(*x);
-      interpolate(problem.mesh, direction, *v);
+      interpolate(problem.mesh, *problem.dofMap, direction, *v);
       auto J = problem.assembler->createJacobian();
       problem.assembler->jacobian(*x, *J);
       J->apply(*v, *jv);
@@ -441,9 +444,9 @@ struct Gathered {
 Gathered assembleAndGather(const Mesh& mesh, const DofMap& dofMap, const Assembler& assembler,
                            const BoundaryConditions& bcs, const Field& state, double& pathDifference) {
   const auto comm = dofMap.comm();
-  const GO numDofs = kDofsPerNode * mesh.numNodes();
+  const GO numDofs = dofMap.numGlobalDofs();
   Vector x(dofMap.ownedMap()), f(dofMap.ownedMap()), fj(dofMap.ownedMap());
-  interpolate(mesh, state, x);
+  interpolate(mesh, dofMap, state, x);
   bcs.imposeOnSolution(x);
   assembler.residual(x, f);
   auto J = assembler.createJacobian();

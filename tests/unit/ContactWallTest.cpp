@@ -1,9 +1,9 @@
-// The contact wall's nodal law (SPEC §2) against hand values, its AD tangent against
+// The contact wall's nodal law (docs/theory.md §2) against hand values, its AD tangent against
 // finite differences, and the status decisions.
 #include <Sacado.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
 
-#include "flowform/InputError.hpp"
+#include "flowform/core/InputError.hpp"
 #include "flowform/contact/ContactWall.hpp"
 
 namespace {
@@ -152,7 +152,7 @@ TEUCHOS_UNIT_TEST(ContactWall, TangentMatchesFiniteDifferences) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Parameter derivatives ∂R/∂ν, ∂R/∂m (SPEC §4, paper eq. 28): the same law with the friction
+// Parameter derivatives ∂R/∂ν, ∂R/∂m (docs/theory.md §4, paper eq. 28): the same law with the friction
 // parameters as PScalar = SFad<double, 1> (dofs constant Fads), against central differences.
 // ---------------------------------------------------------------------------------------
 

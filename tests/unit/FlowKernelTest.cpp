@@ -15,9 +15,9 @@
 #include <cmath>
 #include <vector>
 
-#include "flowform/Material.hpp"
-#include "flowform/kernels/FlowResidual.hpp"
-#include "flowform/kernels/ShapeFunctions.hpp"
+#include "flowform/physics/Material.hpp"
+#include "flowform/physics/FlowResidual.hpp"
+#include "flowform/discretization/ShapeFunctions.hpp"
 
 namespace {
 
@@ -25,7 +25,7 @@ using flowform::CellQuadrature;
 using flowform::CellType;
 using flowform::FlowKernelSettings;
 using flowform::Geometry;
-using flowform::kDofsPerNode;
+constexpr int kDofsPerNode = flowform::EqualOrderLayout::kFieldsPerNode;  // the equal-order element layout
 using flowform::MaterialParameters;
 
 using XY = std::array<double, 2>;
@@ -386,7 +386,7 @@ TEUCHOS_UNIT_TEST(FlowKernel, JacobianNearRigidZoneMatchesFiniteDifferences) {
 }
 
 TEUCHOS_UNIT_TEST(FlowKernel, ParameterDerivativesMatchFiniteDifferences) {
-  // ∂R/∂h for h = σ0, γ, n, e0 (SPEC §4): parameters seeded, dofs constant of the same
+  // ∂R/∂h for h = σ0, γ, n, e0 (docs/theory.md §4): parameters seeded, dofs constant of the same
   // Fad type. Steps as in MaterialTest: 1e-5 of the scale on which R varies with h (the
   // parameter itself; e_r for e0, which enters only through e_r² = 2/3 D:D + e0²).
   // Truncation ≤ 1e-9, round-off ≤ eps·|R|/(δ |∂R/∂h|) ≈ 1e-8 for the weakest (e0).

@@ -7,3 +7,6 @@ flowform_unit_test(AssemblyTest unit/AssemblyTest.cpp NP 2)
 target_compile_definitions(AssemblyTest PRIVATE FLOWFORM_SOURCE_DIR="${FLOWFORM_SOURCE_DIR}")
 # A rank that throws leaves the other waiting in a collective: fail instead of hanging.
 set_tests_properties(AssemblyTest AssemblyTest_np2 PROPERTIES TIMEOUT 300)
+# Moving the mesh nodes: refreshed geometry gives the residual of a fresh mesh (1 and 2 ranks).
+flowform_unit_test(MovingMeshTest unit/MovingMeshTest.cpp)
+flowform_unit_test(MovingMeshTest unit/MovingMeshTest.cpp NP 2)

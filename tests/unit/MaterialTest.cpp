@@ -1,4 +1,4 @@
-// The rigid-viscoplastic law (Material.hpp, SPEC §1): values against the formulas written
+// The rigid-viscoplastic law (Material.hpp, docs/theory.md §1): values against the formulas written
 // out again here with std::pow (the library uses exp(log(·)/n)), the Newtonian limit, and
 // Sacado derivatives — with respect to D:D and to each parameter σ0, γ, n, e0 — against
 // closed-form derivatives and central finite differences.
@@ -8,7 +8,7 @@
 #include <Teuchos_UnitTestHarness.hpp>
 #include <cmath>
 
-#include "flowform/Material.hpp"
+#include "flowform/physics/Material.hpp"
 
 namespace {
 

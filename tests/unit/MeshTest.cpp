@@ -13,10 +13,10 @@
 #include <cmath>
 #include <string>
 
-#include "flowform/BoundaryCurve.hpp"
-#include "flowform/InputError.hpp"
-#include "flowform/MeshReader.hpp"
-#include "flowform/Partition.hpp"
+#include "flowform/mesh/BoundaryCurve.hpp"
+#include "flowform/core/InputError.hpp"
+#include "flowform/mesh/MeshReader.hpp"
+#include "flowform/mesh/Partition.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// ∂R/∂h of the assembled problem (Assembler::parameterDerivative, SPEC §4) against central
+// ∂R/∂h of the assembled problem (Assembler::parameterDerivative, docs/theory.md §4) against central
 // differences of the assembled residual, for every parameter — ν and m of every wall or of
 // one, σ0, γ, n — on P1 and Q1 meshes, plane strain and axisymmetric, with velocity
 // constraints and two contact walls whose nodes are in stick, slip and tension; the
@@ -13,14 +13,14 @@
 #include <functional>
 #include <memory>
 
-#include "flowform/Assembler.hpp"
-#include "flowform/BoundaryConditions.hpp"
-#include "flowform/DofMap.hpp"
-#include "flowform/InputError.hpp"
-#include "flowform/Log.hpp"
-#include "flowform/SensitivityParameter.hpp"
-#include "flowform/Simulation.hpp"
-#include "flowform/contact/StatusLoop.hpp"
+#include "flowform/assembly/Assembler.hpp"
+#include "flowform/bc/BoundaryConditions.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/assembly/SensitivityParameter.hpp"
+#include "flowform/drivers/Simulation.hpp"
+#include "flowform/drivers/ContactStatusLoop.hpp"
 #include "StructuredMesh.hpp"
 
 #include <Teuchos_XMLParameterListHelpers.hpp>
@@ -107,8 +107,8 @@ struct Problem {
     const Map& map = *x->getMap();
     for (size_t i = 0; i < x->getLocalLength(); ++i) {
       const GO g = map.getGlobalElement(static_cast<LO>(i));
-      const auto& xy = mesh.coords[g / kDofsPerNode];
-      v(i, 0) = state(xy[0], xy[1])[g % kDofsPerNode];
+      const auto& xy = mesh.coords[dofMap->nodeOfGlobalDof(g)];
+      v(i, 0) = state(xy[0], xy[1])[dofMap->fieldOfGlobalDof(g)];
     }
     return x;
   }
@@ -138,13 +138,8 @@ TEUCHOS_UNIT_TEST(Sensitivity, AssembledParameterDerivativeMatchesFiniteDifferen
       Problem problem(type, geometry, comm);
       const auto x = problem.stateVector();
       problem.bcs->imposeOnSolution(*x);
-      ParameterList contact;
-      contact.set("Max Status Changes", 10);
-      contact.set("Max Changes Per Node", 4);
-      contact.set("Pressure Tolerance", 1e-3);
-      contact.set("Penetration Tolerance", 1e-4);
-      const ContactStatusLoop loop(contact, problem.mesh, *problem.dofMap);
-      const auto branches = loop.branches(problem.walls, *x);
+
+      const auto branches = wallBranches(problem.walls, *problem.dofMap, *x);
       int count[5] = {0, 0, 0, 0, 0};
       for (const auto& wall : branches)
         for (FrictionBranch b : wall) ++count[static_cast<int>(b)];
@@ -168,7 +163,7 @@ TEUCHOS_UNIT_TEST(Sensitivity, AssembledParameterDerivativeMatchesFiniteDifferen
           problem.assembler->setPhysics(physics);
           problem.assembler->setContactWalls(&walls);
           problem.assembler->residual(*x, sign > 0 ? *fp : *fm);
-          sameBranches = sameBranches && loop.branches(walls, *x) == branches;
+          sameBranches = sameBranches && wallBranches(walls, *problem.dofMap, *x) == branches;
         }
         problem.assembler->setPhysics(problem.physics);
         problem.assembler->setContactWalls(&problem.walls);
@@ -197,7 +192,7 @@ TEUCHOS_UNIT_TEST(Sensitivity, ConstraintRowsDoNotDependOnParameters) {
     for (LO n = 0; n < problem.dofMap->numOwnedNodes(); ++n)
       if (problem.bcs->constraints()[n].kind == NodeConstraint::Kind::Full) {
         ++constrained;
-        nonzero += v(kDofsPerNode * n + kUx, 0) != 0.0 || v(kDofsPerNode * n + kUy, 0) != 0.0;
+        nonzero += v(problem.dofMap->dof(n, kUx), 0) != 0.0 || v(problem.dofMap->dof(n, kUy), 0) != 0.0;
       }
   }
   int total = 0;
@@ -246,8 +241,8 @@ TEUCHOS_UNIT_TEST(Sensitivity, ExtrusionFrictionSensitivityIsExactlyZeroInStickA
     Simulation sim(*params, FLOWFORM_SOURCE_DIR "/xml", comm);
     TEST_ASSERT(sim.run().converged);
     const auto& walls = sim.contactWalls();
-    const ContactStatusLoop loop(sim.parameters().sublist("Contact"), sim.mesh(), sim.dofMap());
-    const auto branches = loop.branches(walls, sim.solution());
+
+    const auto branches = wallBranches(walls, sim.dofMap(), sim.solution());
     // Per node: does any wall through it slip there?
     std::vector<int> slips(sim.mesh().numNodes(), 0), walled(sim.mesh().numNodes(), 0);
     int count[5] = {0, 0, 0, 0, 0};
@@ -265,8 +260,8 @@ TEUCHOS_UNIT_TEST(Sensitivity, ExtrusionFrictionSensitivityIsExactlyZeroInStickA
     int nonzeroWithoutSlip = 0, nonzeroAtSlip = 0, zeroWallRows = 0;
     for (LO n = 0; n < sim.dofMap().numOwnedNodes(); ++n) {
       const GO node = sim.dofMap().overlapNodes()[n];
-      const bool nonzero = v(kDofsPerNode * n + kUx, 0) != 0.0 || v(kDofsPerNode * n + kUy, 0) != 0.0 ||
-                           v(kDofsPerNode * n + kP, 0) != 0.0;
+      const DofMap& dofs = sim.dofMap();
+      const bool nonzero = v(dofs.dof(n, kUx), 0) != 0.0 || v(dofs.dof(n, kUy), 0) != 0.0 || v(dofs.dof(n, kP), 0) != 0.0;
       if (slips[node]) nonzeroAtSlip += nonzero;
       else nonzeroWithoutSlip += nonzero;
       zeroWallRows += walled[node] && !slips[node] && !nonzero;

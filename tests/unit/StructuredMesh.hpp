@@ -8,7 +8,7 @@
 #include <functional>
 #include <string>
 
-#include "flowform/Mesh.hpp"
+#include "flowform/mesh/Mesh.hpp"
 
 namespace flowform::test {
 

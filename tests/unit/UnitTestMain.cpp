@@ -1,4 +1,4 @@
-// Debian ships no Teuchos standard unit-test main (TOOLCHAIN.md): this one holds the
+// Debian ships no Teuchos standard unit-test main (docs/toolchain.md): this one holds the
 // Tpetra scope (MPI and Kokkos) for the whole run.
 #include <Teuchos_UnitTestRepository.hpp>
 #include <Tpetra_Core.hpp>

@@ -1,4 +1,4 @@
-// Channel verification (SPEC §6.1): L2 errors of velocity and pressure against the exact
+// Channel verification (docs/theory.md §6.1): L2 errors of velocity and pressure against the exact
 // fully developed solution on successive refinements, and the observed orders.
 //
 //   ChannelConvergence --check            ctest: asserts the orders (see kExpected* below)
@@ -18,9 +18,9 @@
 #include <Tpetra_Core.hpp>
 
 #include "ChannelExact.hpp"
-#include "flowform/Log.hpp"
-#include "flowform/Simulation.hpp"
-#include "flowform/kernels/ShapeFunctions.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/drivers/Simulation.hpp"
+#include "flowform/discretization/ShapeFunctions.hpp"
 
 using namespace flowform;
 using verification::ChannelExact;

@@ -19,6 +19,7 @@ class GatheredSolver : public LinearSolver {
   std::string type() const override { return m_serial->type(); }
   std::string ordering() const override { return m_serial->ordering(); }
   double factorEntries() const override { return m_serial->factorEntries(); }
+  bool supportsTranspose() const override { return m_serial->supportsTranspose(); }
 
  protected:
   void doFactor(const Teuchos::RCP<const CrsMatrix>& A) override;

@@ -29,12 +29,15 @@ class LinearSolver {
   void factor(const Teuchos::RCP<const CrsMatrix>& A);
   /// x = A⁻¹ b with the current factors, one back-substitution per column of b.
   void solve(const MultiVector& b, MultiVector& x);
-  /// x = A⁻ᵀ b with the same factors (adjoint problems).
+  /// x = A⁻ᵀ b with the same factors (adjoint problems). std::runtime_error on every rank
+  /// when the solver has no transposed solve (supportsTranspose()).
   void solveTranspose(const MultiVector& b, MultiVector& x);
 
   /// The case's name of the solver and of its ordering, e.g. "KLU2", "Nested Dissection".
   virtual std::string type() const = 0;
   virtual std::string ordering() const = 0;
+  /// Whether solveTranspose() is available.
+  virtual bool supportsTranspose() const { return true; }
   /// Entries of L + U of the current factors on this process; -1 when unknown.
   virtual double factorEntries() const { return -1.0; }
 
