@@ -82,8 +82,7 @@ void Assembler::assembleCellsOf(Workset& ws, const SensitivityParameter* h, bool
   for (size_t k = 0; k < m_dofMap.cells().size(); ++k) {
     computeCellGeometry(m_mesh, m_dofMap.cells()[k], m_physics.kernel.geometry, g);
     const LO* nodes = m_dofMap.cellNodes(k);
-    for (int a = 0; a < NumNodes; ++a)
-      for (int c = 0; c < kNumFields; ++c) dofs[EqualOrderLayout::index(a, c)] = m_dofMap.dof(nodes[a], c);
+    m_dofMap.cellDofs(k, dofs);
     gather(ws, dofs, N, values);
     std::fill(res, res + N, Scalar(0.0));
     addFlowResidual(g.rule, g.centroid, g.diameter, m_physics.kernel, material, values, res);
@@ -236,9 +235,7 @@ std::vector<CellState> Assembler::cellStates(const Vector& xOwned) const {
   double values[kNumFields * kMaxNodesPerCell];
   for (size_t k = 0; k < m_dofMap.cells().size(); ++k) {
     computeCellGeometry(m_mesh, m_dofMap.cells()[k], geometry, g);
-    const LO* nodes = m_dofMap.cellNodes(k);
-    for (int a = 0; a < npc; ++a)
-      for (int c = 0; c < kNumFields; ++c) dofs[EqualOrderLayout::index(a, c)] = m_dofMap.dof(nodes[a], c);
+    m_dofMap.cellDofs(k, dofs);
     gather(ws, dofs, EqualOrderLayout::numDofs(npc), values);
     const auto d = strainRateAt(g.centroid, 0, geometry, values);
     const double eReg = regularizedStrainRate(d.ddot(), m_physics.material);

@@ -100,9 +100,7 @@ void cellIntegrals(const Workset& x, const Mesh& mesh, const DofMap& dofMap, con
   deadArea = 0.0;
   for (size_t k = 0; k < dofMap.cells().size(); ++k) {
     computeCellGeometry(mesh, dofMap.cells()[k], geometry, g);
-    const LO* nodes = dofMap.cellNodes(k);
-    for (int a = 0; a < npc; ++a)
-      for (int c = 0; c < kNumFields; ++c) dofs[EqualOrderLayout::index(a, c)] = dofMap.dof(nodes[a], c);
+    dofMap.cellDofs(k, dofs);
     gather(x, dofs, EqualOrderLayout::numDofs(npc), values);
     const Scalar tau =
         stabilizationTau(physics.kernel.beta, g.diameter, centroidViscosity(g.centroid, geometry, material, values));

@@ -138,6 +138,12 @@ DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm,
   m_graph->switchActiveCrsGraph();  // back to owned
 }
 
+void DofMap::cellDofs(size_t k, LO* dofs) const {
+  const LO* nodes = cellNodes(k);
+  for (int a = 0; a < m_nodesPerCell; ++a)
+    for (int f = 0; f < kNumFields; ++f) dofs[EqualOrderLayout::index(a, f)] = dof(nodes[a], f);
+}
+
 GO DofMap::nodeOfGlobalDof(GO dof) const {
   // The last node whose first dof is <= dof.
   return static_cast<GO>(std::upper_bound(m_globalOffset.begin(), m_globalOffset.end(), dof) - m_globalOffset.begin()) - 1;

@@ -1,11 +1,13 @@
 #include "flowform/drivers/CaseParameters.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/bc/BoundaryConditions.hpp"
 #include "flowform/core/InputError.hpp"
+#include "flowform/drivers/OutputFields.hpp"
 #include "flowform/mesh/MeshReader.hpp"
 #include "flowform/solvers/NonlinearSolver.hpp"
 #include "flowform/assembly/Responses.hpp"
@@ -57,6 +59,13 @@ void validateSublist(ParameterList& list, const ParameterList& valid, const std:
   }
 }
 
+/// "a, b, c"
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
 void requirePositive(const ParameterList& list, const std::string& name, const std::string& where) {
   const double v = list.get<double>(name);
   if (!(v > 0.0))
@@ -101,8 +110,9 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   ParameterList& output = valid->sublist("Output", false, "what is written");
   output.set("Write Solution", true, "solution.h5 + solution.xdmf");
   output.set("Boundary CSV", true, "one CSV per named boundary group");
-  output.set("Cell Fields", Teuchos::Array<std::string>({"strain_rate", "equivalent_stress", "viscosity"}),
-             "cell fields to write: any of strain_rate, equivalent_stress, viscosity");
+  const std::vector<std::string>& cellFields = cellFieldNames();
+  output.set("Cell Fields", Teuchos::Array<std::string>(cellFields.begin(), cellFields.end()),
+             "cell fields to write: any of " + joined(cellFields));
   valid->sublist("Responses", false, "functionals by name (include/flowform/assembly/Responses.hpp)")
       .sublist("<response name>", false, "one functional")
       .setParameters(*Responses::validParameters());
@@ -141,9 +151,8 @@ void validateCase(ParameterList& params) {
   for (const char* name : {"Rate Constant", "Rate Exponent", "Strain Rate Cutoff"})
     requirePositive(mat, name, "Material");
   for (const auto& name : params.sublist("Output").get<Teuchos::Array<std::string>>("Cell Fields"))
-    if (name != "strain_rate" && name != "equivalent_stress" && name != "viscosity")
-      throw InputError("Output/Cell Fields: unknown field '" + name +
-                       "'; allowed: strain_rate, equivalent_stress, viscosity");
+    if (std::find(cellFieldNames().begin(), cellFieldNames().end(), name) == cellFieldNames().end())
+      throw InputError("Output/Cell Fields: unknown field '" + name + "'; allowed: " + joined(cellFieldNames()));
 
   // Only a case with a Sensitivity sublist gets one (with defaults): none means no work.
   if (params.isSublist("Sensitivity"))

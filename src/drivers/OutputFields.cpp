@@ -66,7 +66,7 @@ FieldSet gatherOutputFields(const Assembler& assembler, const Vector& solution, 
     }
     return f;
   };
-  fields.nodal = {nodal(*allDofs, 0, {kUx, kUy}, {"velocity"}), nodal(*allDofs, 0, {kP}, {"pressure"})};
+  fields.nodal = {nodal(*allDofs, 0, {kUx, kUy}, {"velocity", 2, {}}), nodal(*allDofs, 0, {kP}, {"pressure", 1, {}})};
   if (!walls.empty()) {
     // 1 active, 0 free, -1 not on a contact wall
     Field status{"contact_status", 1, std::vector<double>(numNodes, -1.0)};
@@ -82,7 +82,7 @@ FieldSet gatherOutputFields(const Assembler& assembler, const Vector& solution, 
     for (size_t j = 0; j < parameters.size(); ++j) {
       const std::string h = parameters[j].symbol + suffix;
       fields.nodal.push_back(nodal(*dofs, j, {kUx, kUy}, {"du_d" + h, 2, {}, "du_t_d" + h, "du_n_d" + h}));
-      fields.nodal.push_back(nodal(*dofs, j, {kP}, {"dp_d" + h}));
+      fields.nodal.push_back(nodal(*dofs, j, {kP}, {"dp_d" + h, 1, {}}));
     }
   }
   auto c = allCells.getLocalViewHost(Tpetra::Access::ReadOnly);

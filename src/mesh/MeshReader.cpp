@@ -1,7 +1,6 @@
 // Mesh input through gmsh's C++ API. Rank 0 alone talks to gmsh (gmsh keeps global state
-// and is not MPI-aware); the finished Mesh, or the error text, is packed into one byte
-// buffer and broadcast, so every rank returns the same mesh or throws the same error and
-// no rank is left waiting in a collective when rank 0 fails.
+// and is not MPI-aware); the finished Mesh, or the error, reaches every rank through
+// broadcastMesh (MeshBroadcast.hpp).
 #include "flowform/mesh/MeshReader.hpp"
 
 #include <gmsh.h>
@@ -19,6 +18,8 @@
 #include <unordered_map>
 
 #include "flowform/core/InputError.hpp"
+#include "flowform/mesh/MeshBroadcast.hpp"
+#include "flowform/mesh/MeshOptions.hpp"
 
 namespace flowform {
 
@@ -27,67 +28,6 @@ namespace {
 constexpr int kGmshLine2 = 1;  // gmsh element types: 2-node line,
 constexpr int kGmshTri3 = 2;   // 3-node triangle,
 constexpr int kGmshQuad4 = 3;  // 4-node quadrangle
-// |area| below this times (longest edge)^2 is a degenerate cell: far below any element a
-// mesher produces on purpose, far above round-off of coordinates of order one.
-constexpr double kDegenerateRatio = 1e-12;
-
-struct ReadOptions {
-  std::string path;  ///< File resolved against baseDir
-  bool isGeo = false;
-  CellType cellType = CellType::Triangle3;
-  double sizeFactor = 1.0;
-  int refinements = 0;
-  bool verbose = false;
-  std::vector<std::pair<std::string, double>> geoParameters;
-};
-
-/// Validation and defaults on every rank: they depend on the parameter list only, so all
-/// ranks throw the same InputError here without talking to each other.
-ReadOptions parseOptions(const Teuchos::ParameterList& given, const std::string& baseDir) {
-  Teuchos::ParameterList params(given);
-  try {
-    params.validateParametersAndSetDefaults(*validMeshParameters());
-  } catch (const std::exception& e) {
-    throw InputError(std::string("invalid parameter in the Mesh list: ") + e.what());
-  }
-  ReadOptions opt;
-  const std::string file = params.get<std::string>("File");
-  if (file.empty()) throw InputError("Mesh/File is required: the .msh or .geo file to read");
-  std::filesystem::path path(file);
-  if (path.is_relative() && !baseDir.empty()) path = std::filesystem::path(baseDir) / path;
-  opt.path = path.lexically_normal().string();
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char ch) { return std::tolower(ch); });
-  if (ext != ".msh" && ext != ".geo")
-    throw InputError("mesh file '" + opt.path + "' (Mesh/File): unknown extension '" + ext +
-                     "'; flowform reads gmsh .msh and .geo files");
-  opt.isGeo = ext == ".geo";
-  opt.cellType = Teuchos::getIntegralValue<CellType>(params, "Element Type");
-  opt.sizeFactor = params.get<double>("Size Factor");
-  opt.refinements = params.get<int>("Uniform Refinements");
-  opt.verbose = params.get<bool>("Verbose");
-  const Teuchos::ParameterList& geo = params.sublist("Geo Parameters");
-  for (auto it = geo.begin(); it != geo.end(); ++it) {
-    const std::string& name = geo.name(it);
-    const Teuchos::ParameterEntry& entry = geo.entry(it);
-    if (entry.isType<double>())
-      opt.geoParameters.emplace_back(name, Teuchos::getValue<double>(entry));
-    else if (entry.isType<int>())
-      opt.geoParameters.emplace_back(name, Teuchos::getValue<int>(entry));
-    else
-      throw InputError("Mesh/Geo Parameters/" + name + " must be a number (type double)");
-  }
-  // Options that only shape meshing would be silently ignored for a ready-made .msh.
-  if (!opt.isGeo && !opt.geoParameters.empty())
-    throw InputError("Mesh/Geo Parameters is set but '" + opt.path +
-                     "' is a .msh file; Geo Parameters only apply to .geo files");
-  if (!opt.isGeo && opt.sizeFactor != 1.0)
-    throw InputError("Mesh/Size Factor is set but '" + opt.path +
-                     "' is a .msh file; Size Factor only applies to .geo files (use Uniform "
-                     "Refinements)");
-  return opt;
-}
 
 // ------------------------------------------------------------------------------------------
 // Rank 0: gmsh
@@ -264,42 +204,18 @@ std::string cellLabel(const Mesh& mesh, GO c, std::size_t gmshTag) {
 /// bilinear map is not invertible, whichever way round the nodes are listed.
 int cellOrientation(const Mesh& mesh, GO c, std::size_t gmshTag) {
   const int npc = nodesPerCell(mesh.cellType);
-  std::array<std::array<double, 2>, 4> x{};
+  std::array<double, 2> x[4];
   for (int i = 0; i < npc; ++i) x[i] = mesh.coords[mesh.cell(c)[i]];
-  auto cross = [](const std::array<double, 2>& a, const std::array<double, 2>& b,
-                  const std::array<double, 2>& o) {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-  };
-  double longest2 = 0;
-  for (int i = 0; i < npc; ++i) {
-    const double dx = x[(i + 1) % npc][0] - x[i][0], dy = x[(i + 1) % npc][1] - x[i][1];
-    longest2 = std::max(longest2, dx * dx + dy * dy);
-  }
-  const double tiny = 2.0 * kDegenerateRatio * longest2;  // on twice the area
-  auto degenerate = [&](const std::string& why) {
-    return InputError("degenerate " + cellLabel(mesh, c, gmshTag) + " in mesh file '" +
-                      mesh.source + "': " + why);
-  };
-  if (mesh.cellType == CellType::Triangle3) {
-    const double twiceArea = cross(x[1], x[2], x[0]);
-    if (std::abs(twiceArea) <= tiny) throw degenerate("its area is zero");
-    return twiceArea > 0 ? 1 : -1;
-  }
-  // Quadrilateral: the corners decide. Same-signed nonzero corner Jacobians also bound the
-  // area away from zero, while a bow-tie can have zero net area and is reported as inverted.
-  int positive = 0, negative = 0;
-  for (int i = 0; i < 4; ++i) {
-    // Jacobian determinant of the bilinear map at corner i (times 4): twice the area of
-    // the triangle the corner and its two neighbours span.
-    const double j = cross(x[(i + 1) % 4], x[(i + 3) % 4], x[i]);
-    if (std::abs(j) <= tiny)
-      throw degenerate("corner " + std::to_string(i) + " has a zero or 180 degree angle");
-    (j > 0 ? positive : negative)++;
-  }
-  if (positive == 4) return 1;
-  if (negative == 4) return -1;
-  throw InputError("inverted " + cellLabel(mesh, c, gmshTag) + " in mesh file '" + mesh.source +
-                   "': its corner Jacobians differ in sign (bow-tie or non-convex quadrilateral)");
+  const CellOrientation o = cellOrientation(mesh.cellType, x);
+  if (o.kind == CellOrientation::Kind::Degenerate)
+    throw InputError("degenerate " + cellLabel(mesh, c, gmshTag) + " in mesh file '" + mesh.source + "': " +
+                     (mesh.cellType == CellType::Triangle3
+                          ? std::string("its area is zero")
+                          : "corner " + std::to_string(o.corner) + " has a zero or 180 degree angle"));
+  if (o.kind == CellOrientation::Kind::Mixed)
+    throw InputError("inverted " + cellLabel(mesh, c, gmshTag) + " in mesh file '" + mesh.source +
+                     "': its corner Jacobians differ in sign (bow-tie or non-convex quadrilateral)");
+  return o.kind == CellOrientation::Kind::CounterClockwise ? 1 : -1;
 }
 
 /// gmsh orients cells by the surface normal, so a surface drawn clockwise gives clockwise
@@ -433,169 +349,12 @@ Mesh readOnRoot(const ReadOptions& opt) {
 }
 
 // ------------------------------------------------------------------------------------------
-// Broadcast: the mesh as one byte buffer (plain copies of trivially copyable data).
-
-class Packer {
- public:
-  template <class T>
-  void put(const T& value) {
-    putRaw(&value, sizeof(T));
-  }
-  template <class T>
-  void putVector(const std::vector<T>& v) {
-    put<std::uint64_t>(v.size());
-    putRaw(v.data(), v.size() * sizeof(T));
-  }
-  void putString(const std::string& s) { putVector(std::vector<char>(s.begin(), s.end())); }
-  std::vector<char> bytes;
-
- private:
-  void putRaw(const void* p, std::size_t n) {
-    const char* c = static_cast<const char*>(p);
-    bytes.insert(bytes.end(), c, c + n);
-  }
-};
-
-class Unpacker {
- public:
-  explicit Unpacker(const std::vector<char>& bytes) : m_bytes(bytes) {}
-  template <class T>
-  T get() {
-    T value;
-    getRaw(&value, sizeof(T));
-    return value;
-  }
-  template <class T>
-  std::vector<T> getVector() {
-    std::vector<T> v(get<std::uint64_t>());
-    getRaw(v.data(), v.size() * sizeof(T));
-    return v;
-  }
-  std::string getString() {
-    auto v = getVector<char>();
-    return std::string(v.begin(), v.end());
-  }
-
- private:
-  void getRaw(void* p, std::size_t n) {
-    if (m_pos + n > m_bytes.size()) throw std::logic_error("readMesh: broadcast buffer too short");
-    if (n > 0) std::memcpy(p, m_bytes.data() + m_pos, n);
-    m_pos += n;
-  }
-  const std::vector<char>& m_bytes;
-  std::size_t m_pos = 0;
-};
-
-enum Status : int { kOk = 0, kInputError = 1, kOtherError = 2 };
-
-void packMesh(Packer& p, const Mesh& mesh) {
-  p.putString(mesh.source);
-  p.put<int>(static_cast<int>(mesh.cellType));
-  p.putVector(mesh.coords);
-  p.putVector(mesh.cellNodes);
-  p.put<std::uint64_t>(mesh.boundaries.size());
-  for (const BoundaryGroup& g : mesh.boundaries) {
-    p.putString(g.name);
-    p.putVector(g.edges);
-  }
-  p.put<std::uint64_t>(mesh.regions.size());
-  for (const RegionGroup& g : mesh.regions) {
-    p.putString(g.name);
-    p.putVector(g.cells);
-  }
-}
-
-Mesh unpackMesh(Unpacker& u) {
-  Mesh mesh;
-  mesh.source = u.getString();
-  mesh.cellType = static_cast<CellType>(u.get<int>());
-  mesh.coords = u.getVector<std::array<double, 2>>();
-  mesh.cellNodes = u.getVector<GO>();
-  mesh.boundaries.resize(u.get<std::uint64_t>());
-  for (BoundaryGroup& g : mesh.boundaries) {
-    g.name = u.getString();
-    g.edges = u.getVector<std::array<GO, 2>>();
-  }
-  mesh.regions.resize(u.get<std::uint64_t>());
-  for (RegionGroup& g : mesh.regions) {
-    g.name = u.getString();
-    g.cells = u.getVector<GO>();
-  }
-  return mesh;
-}
-
-void broadcastBytes(const Teuchos::Comm<int>& comm, std::vector<char>& bytes) {
-  long long size = static_cast<long long>(bytes.size());
-  Teuchos::broadcast<int, long long>(comm, 0, 1, &size);
-  bytes.resize(static_cast<std::size_t>(size));
-  const long long chunk = 1 << 30;  // MPI counts are int
-  for (long long offset = 0; offset < size; offset += chunk)
-    Teuchos::broadcast<int, char>(comm, 0, static_cast<int>(std::min(chunk, size - offset)),
-                                  bytes.data() + offset);
-}
-
 }  // namespace
-
-Teuchos::RCP<const Teuchos::ParameterList> validMeshParameters() {
-  using Teuchos::tuple;
-  auto pl = Teuchos::rcp(new Teuchos::ParameterList("Mesh"));
-  pl->set("File", std::string(),
-          "Mesh file, required: a gmsh .msh (format 4; 2.2 is read as well) or a .geo meshed "
-          "on the fly. A relative path is taken relative to the directory of the case XML.");
-  Teuchos::setStringToIntegralParameter<CellType>(
-      "Element Type", "Triangle", "Cell type of the mesh (P1/P1 or Q1/Q1 elements).",
-      tuple<std::string>("Triangle", "Quadrilateral"),
-      tuple<std::string>("3-node triangles (gmsh type 2)",
-                         "4-node quadrilaterals (gmsh type 3); a .geo is meshed with "
-                         "Mesh.RecombineAll = 1"),
-      tuple<CellType>(CellType::Triangle3, CellType::Quadrilateral4), pl.get());
-  pl->set("Size Factor", 1.0,
-          "Multiplies every mesh size of a .geo (gmsh option Mesh.MeshSizeFactor); no effect on "
-          "transfinite curves. Must stay 1 for a .msh.",
-          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(
-              std::numeric_limits<double>::min(), std::numeric_limits<double>::max())));
-  pl->set(
-      "Uniform Refinements", 0,
-      "Times every cell is split into 4 (gmsh::model::mesh::refine) after reading or meshing.",
-      Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, std::numeric_limits<int>::max())));
-  pl->set("Verbose", false, "Let gmsh print its log on rank 0.");
-  Teuchos::ParameterList& geo = pl->sublist(
-      "Geo Parameters", false,
-      "Numbers handed to a .geo before it is parsed: an entry NAME = v sets the onelab number "
-      "\"Parameters/NAME\", which the .geo reads with "
-      "DefineConstant[ NAME = {default, Name \"Parameters/NAME\"} ];. A NAME the .geo does not "
-      "define that way is an error.");
-  geo.disableRecursiveValidation();  // its entries are the .geo's names, checked in readMesh
-  return pl;
-}
 
 Mesh readMesh(const Teuchos::ParameterList& meshParams, const std::string& baseDir,
               const Teuchos::Comm<int>& comm) {
   const ReadOptions opt = parseOptions(meshParams, baseDir);
-  std::vector<char> bytes;
-  if (comm.getRank() == 0) {
-    Packer p;
-    try {
-      const Mesh mesh = readOnRoot(opt);
-      p.put<int>(kOk);
-      packMesh(p, mesh);
-    } catch (const InputError& e) {
-      p = Packer();
-      p.put<int>(kInputError);
-      p.putString(e.what());
-    } catch (const std::exception& e) {
-      p = Packer();
-      p.put<int>(kOtherError);
-      p.putString(std::string("reading mesh file '") + opt.path + "': " + e.what());
-    }
-    bytes = std::move(p.bytes);
-  }
-  broadcastBytes(comm, bytes);
-  Unpacker u(bytes);
-  const int status = u.get<int>();
-  if (status == kInputError) throw InputError(u.getString());
-  if (status != kOk) throw std::runtime_error(u.getString());
-  return unpackMesh(u);
+  return broadcastMesh(comm, [&] { return readOnRoot(opt); }, "reading mesh file '" + opt.path + "'");
 }
 
 }  // namespace flowform

@@ -2,11 +2,15 @@
 # assembled problem (patch tests, exact solves, parallel = serial on 1 and 2 ranks).
 flowform_unit_test(MaterialTest unit/MaterialTest.cpp)
 flowform_unit_test(FlowKernelTest unit/FlowKernelTest.cpp)
+flowform_unit_test(FlowKernelDerivativeTest unit/FlowKernelDerivativeTest.cpp)
 flowform_unit_test(AssemblyTest unit/AssemblyTest.cpp)
 flowform_unit_test(AssemblyTest unit/AssemblyTest.cpp NP 2)
+flowform_unit_test(AssemblyParallelTest unit/AssemblyParallelTest.cpp)
+flowform_unit_test(AssemblyParallelTest unit/AssemblyParallelTest.cpp NP 2)
+target_compile_definitions(AssemblyParallelTest PRIVATE FLOWFORM_SOURCE_DIR="${FLOWFORM_SOURCE_DIR}")
 target_compile_definitions(AssemblyTest PRIVATE FLOWFORM_SOURCE_DIR="${FLOWFORM_SOURCE_DIR}")
 # A rank that throws leaves the other waiting in a collective: fail instead of hanging.
-set_tests_properties(AssemblyTest AssemblyTest_np2 PROPERTIES TIMEOUT 300)
+set_tests_properties(AssemblyTest AssemblyTest_np2 AssemblyParallelTest AssemblyParallelTest_np2 PROPERTIES TIMEOUT 300)
 # Moving the mesh nodes: refreshed geometry gives the residual of a fresh mesh (1 and 2 ranks).
 flowform_unit_test(MovingMeshTest unit/MovingMeshTest.cpp)
 flowform_unit_test(MovingMeshTest unit/MovingMeshTest.cpp NP 2)

@@ -236,8 +236,10 @@ TEUCHOS_UNIT_TEST(Sensitivity, ExtrusionFrictionSensitivityIsExactlyZeroInStickA
     auto params = Teuchos::getParametersFromXmlFile(FLOWFORM_SOURCE_DIR "/xml/extrusion.xml");
     params->sublist("Mesh").sublist("Geo Parameters").set("h", 0.2);
     params->sublist("Mesh").sublist("Geo Parameters").set("hc", 0.05);
-    for (const char* wall : {"container", "die_face", "die_land"})
-      params->sublist("Boundary Conditions").sublist(wall).set("Friction Coefficient", nu);
+    Teuchos::ParameterList& bcs = params->sublist("Boundary Conditions");  // every contact wall of the scene
+    for (auto it = bcs.begin(); it != bcs.end(); ++it)
+      if (bcs.sublist(bcs.name(it)).get<std::string>("Type", "") == "Contact Wall")
+        bcs.sublist(bcs.name(it)).set("Friction Coefficient", nu);
     Simulation sim(*params, FLOWFORM_SOURCE_DIR "/xml", comm);
     TEST_ASSERT(sim.run().converged);
     const auto& walls = sim.contactWalls();

@@ -23,8 +23,8 @@ struct FlowPhysics;
 enum class ParameterKind { FrictionCoefficient, ShearFactor, YieldStress, RateConstant, RateExponent };
 
 struct SensitivityParameter {
-  std::string name;    ///< as the case gives it, e.g. "Friction Coefficient:die_land"
-  std::string symbol;  ///< for field and column names: nu, nu_die_land, m, sigma0, gamma, n
+  std::string name;    ///< as the case gives it, e.g. "Friction Coefficient:<wall group>"
+  std::string symbol;  ///< for field and column names: nu, nu_<wall group>, m, sigma0, gamma, n
   ParameterKind kind = ParameterKind::YieldStress;
   int wall = -1;       ///< friction parameters: the wall's index, −1 for every wall
 

@@ -53,6 +53,9 @@ class DofMap {
   /// Overlap-local dof of (overlap node `n`, field); the owned map's local index too when n
   /// is owned (owned nodes come first in both).
   LO dof(LO n, int field) const { return m_localOffset[n] + field; }
+  /// The overlap dofs of this rank's cell k in the element layout's order (the cell gather's
+  /// addresses): dofs[EqualOrderLayout::index(a, field)] = dof(cellNodes(k)[a], field).
+  void cellDofs(size_t k, LO* dofs) const;
   /// Global dof id of (mesh node `node`, field).
   GO globalDof(GO node, int field) const { return m_globalOffset[node] + field; }
   /// Fields carried by mesh node `node`.

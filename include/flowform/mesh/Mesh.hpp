@@ -19,6 +19,18 @@ inline const char* cellTypeName(CellType type) {
   return type == CellType::Triangle3 ? "Triangle" : "Quadrilateral";
 }
 
+/// How a cell lies at given node positions: counter-clockwise or clockwise (every corner
+/// Jacobian of that sign), degenerate (a corner with |det J| ≤ 10⁻¹² × the longest edge²,
+/// far below any element a mesher makes on purpose, far above the round-off of coordinates
+/// of order one), or mixed (a quadrilateral whose corner Jacobians differ in sign: bow-tie
+/// or non-convex, its bilinear map not invertible). A triangle has one Jacobian.
+struct CellOrientation {
+  enum class Kind { CounterClockwise, Clockwise, Degenerate, Mixed };
+  Kind kind;
+  int corner = -1;  ///< the degenerate corner
+};
+CellOrientation cellOrientation(CellType type, const std::array<double, 2>* xy);
+
 /// The edges of one gmsh physical group of dimension 1, as node-id pairs.
 struct BoundaryGroup {
   std::string name;

@@ -28,7 +28,7 @@
 #include "flowform/sensitivity/Sensitivity.hpp"
 #include "flowform/core/TpetraTypes.hpp"
 #include "flowform/contact/ContactWall.hpp"
-#include "flowform/drivers/ContactStatusLoop.hpp"
+#include "flowform/contact/WallStates.hpp"
 
 namespace flowform {
 
