@@ -40,15 +40,13 @@ usage:
 
 The wall, tool and outlet names come from each case file (python/flowform_tools/case.py);
 runs go through python/flowform_tools (launcher). Every number is read from summary.json and
-the boundary CSVs, except the Newton iterations of each flow solve (first solve and
-re-solves) and the restarts, which summary.json does not have yet: they are parsed from the
-log (parse_solves, marked TODO). Needs Debian's /usr/bin/python3 (numpy) and /usr/bin/time
+the boundary CSVs (the Newton iterations of each flow solve and the restarts: summary.json
+"solves"). Needs Debian's /usr/bin/python3 (numpy) and /usr/bin/time
 (package time). Exit status 0 when every run converged (exit 0), 1 otherwise.
 """
 import argparse
 import json
 import os
-import re
 import statistics
 import sys
 
@@ -89,36 +87,14 @@ def run_flowform(flowform, case, outdir, h, timeout):
                      log=log_path, timeout=timeout, peak_memory=True)
     return {"status": "timeout" if r.timed_out else r.status, "wall": r.wall, "rss": r.peak_rss,
             "binary_built": built, "command": r.command, "dir": outdir, "load": (before, load()),
-            "log_tail": r.log_tail(20), "summary": r.summary, "solves": parse_solves(log_path)}
+            "log_tail": r.log_tail(20), "summary": r.summary, "solves": solves_of(r.summary)}
 
 
-NEWTON_LINE = re.compile(r"^\s+newton\s+\d+\s")
-
-
-def parse_solves(log_path):
-    """Newton iterations of each flow solve, from the log: the first solve (predictor and
-    continuation stages) and one re-solve after each "contact: wall ..." status change.
-    Also the number of re-solves that failed and restarted from the predictor.
-
-    TODO: the only numbers a benchmark still reads from flowform's human log. summary.json
-    has the total (newton_iterations), the status changes (contact_changes) and the first
-    solve's stages, but not the iterations per re-solve nor the restarts; read them from
-    summary.json once it reports them, and drop this parser."""
-    solves, restarts = [], 0
-    try:
-        with open(log_path) as f:
-            for line in f:
-                if line.startswith("flowform:") and "dofs" in line and not solves:
-                    solves.append(0)
-                elif line.startswith("contact: wall "):
-                    solves.append(0)
-                elif NEWTON_LINE.match(line) and solves:
-                    solves[-1] += 1
-                elif "re-solve failed" in line:
-                    restarts += 1
-    except OSError:
-        pass
-    return {"newton_per_solve": solves, "restarts": restarts}
+def solves_of(summary):
+    """Newton iterations of each flow solve (the first, then one re-solve per contact status
+    change) and the re-solves that restarted from the predictor, from summary.json "solves"."""
+    solves = (summary or {}).get("solves", {})
+    return {"newton_per_solve": solves.get("newton_iterations", []), "restarts": solves.get("restarts", 0)}
 
 
 # ------------------------------------------------------------------------------------------

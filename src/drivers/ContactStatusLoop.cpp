@@ -54,6 +54,8 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
     ++changes;
     const SolveReport again = solver.resolve(x, physics);
     report.newtonIterations += again.newtonIterations;
+    report.newtonPerSolve.push_back(again.newtonIterations);
+    report.restarts += again.restarts;
     report.converged = again.converged;
     report.residualNorm = again.residualNorm;
     if (!again.converged) report.message = "after contact change " + std::to_string(changes) + ": " + again.message;

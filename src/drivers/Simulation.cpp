@@ -94,6 +94,7 @@ const SolveReport& Simulation::run() {
   NonlinearSolver solver = newtonSolver(true);
   if (!m_walls.empty()) updateWallScales(*m_solution);
   m_report = solver.solve(*m_solution, m_physics);
+  m_report.newtonPerSolve = {m_report.newtonIterations};
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged)

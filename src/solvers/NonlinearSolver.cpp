@@ -107,6 +107,7 @@ void SolveReport::report(nlohmann::json& summary) const {
     list.push_back({{"rate_exponent", s.rateExponent}, {"cutoff", s.cutoff}, {"newton_iterations", s.newtonIterations},
                     {"converged", s.converged}, {"residual_norm", s.residualNorm}});
   summary["stages"] = list;
+  summary["solves"] = {{"newton_iterations", newtonPerSolve}, {"restarts", restarts}};
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
@@ -211,6 +212,7 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target) {
   Tpetra::deep_copy(x, start);
   SolveReport full = solve(x, target);
   full.newtonIterations += report.newtonIterations;
+  full.restarts = 1;
   return full;
 }
 

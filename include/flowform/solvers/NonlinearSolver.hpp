@@ -40,8 +40,12 @@ struct SolveReport {
   double residualNorm = 0.0;   ///< ||F|| at the returned x
   std::vector<StageReport> stages;
   std::string message;         ///< why it did not converge, when it did not
+  /// Newton iterations of each flow solve: the first (all its stages), then one per re-solve
+  /// after a contact status change (ContactStatusLoop).
+  std::vector<int> newtonPerSolve;
+  int restarts = 0;  ///< re-solves that failed and started again from the predictor
   /// converged, linear_problem, newton_iterations, continuation_stages, residual_norm,
-  /// stages and message into the summary.
+  /// stages, message and "solves" (newton_iterations per solve, restarts) into the summary.
   void report(nlohmann::json& summary) const;
 };
 
