@@ -154,6 +154,8 @@ void Klu2NestedDissection::doFactor(const Teuchos::RCP<const CrsMatrix>& matrix)
       throw std::runtime_error("KLU2 symbolic analysis failed (status " + std::to_string(d.common.status) + ")");
   }
   // CSR read as CSC: KLU2 factors Aᵀ (see the header).
+  // A copy of the values (O(nnz), small next to the factorization) for a later transposed
+  // factorization: the matrix may be reassembled before a transposed solve asks for it.
   d.values.assign(local.values.data(), local.values.data() + local.values.extent(0));
   d.numeric = KLU2::klu_factor<double, KluInt>(d.rowStart.data(), d.cols.data(), d.values.data(), d.symbolic,
                                                &d.common);

@@ -3,11 +3,7 @@
 // communicator), on a generated mesh and on the channel scene.
 #include "AssemblyProblem.hpp"
 
-namespace {
-
-using namespace flowform;
-using Teuchos::ParameterList;
-using Teuchos::RCP;
+namespace {  // AssemblyProblem.hpp's, with its using-declarations
 
 /// Residual and Jacobian gathered on rank 0, by global dof. Other ranks get empty ones.
 struct Gathered {

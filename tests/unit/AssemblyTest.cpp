@@ -11,11 +11,7 @@
 //  (parallel = serial: AssemblyParallelTest.cpp)
 #include "AssemblyProblem.hpp"
 
-namespace {
-
-using namespace flowform;
-using Teuchos::ParameterList;
-using Teuchos::RCP;
+namespace {  // AssemblyProblem.hpp's, with its using-declarations
 
 // ---------------------------------------------------------------------------------------
 // Patch test

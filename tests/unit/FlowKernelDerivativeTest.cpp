@@ -7,13 +7,7 @@
 
 #include "FlowKernelCell.hpp"
 
-namespace {
-
-using flowform::CellQuadrature;
-using flowform::CellType;
-using flowform::FlowKernelSettings;
-using flowform::Geometry;
-using flowform::MaterialParameters;
+namespace {  // FlowKernelCell.hpp's, with its using-declarations
 
 // ---------------------------------------------------------------------------------------
 // (b) AD derivatives against central finite differences

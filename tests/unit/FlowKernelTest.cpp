@@ -7,13 +7,7 @@
 //   R_p[a] = ∫ ( − N_a div u − τ grad N_a · (grad p − f) ) dΩ,   τ = β h² / (2 μ_K)
 #include "FlowKernelCell.hpp"
 
-namespace {
-
-using flowform::CellQuadrature;
-using flowform::CellType;
-using flowform::FlowKernelSettings;
-using flowform::Geometry;
-using flowform::MaterialParameters;
+namespace {  // FlowKernelCell.hpp's, with its using-declarations
 
 // Hand values are the same integrals evaluated in a different order: entries are sums of
 // ≤ 10 products of O(1) numbers, so both sides carry ~10 eps ≈ 2e-15 of the vector's scale

@@ -16,7 +16,10 @@
 //
 // Storage: Tpetra keeps A by rows (CSR); read as columns (CSC) that is Aᵀ, which is what
 // KLU2 factors here (Amesos2 does the same on one process). Solves of A x = b then use
-// KLU2's transposed solve, and solves of Aᵀ x = b its plain one.
+// KLU2's transposed solve. Solves of Aᵀ x = b use the same transposed solve on a second
+// factorization, of A itself, made on the first such solve after each factor() (KLU2's
+// plain solve is wrong on permuted factors in Trilinos 13.2; docs/toolchain.md); it is not
+// counted in numFactorizations().
 #pragma once
 
 #include <memory>
