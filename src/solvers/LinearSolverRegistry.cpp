@@ -5,34 +5,46 @@
 #include "flowform/solvers/GatheredSolver.hpp"
 #include "flowform/solvers/Klu2Amd.hpp"
 #include "flowform/solvers/Klu2NestedDissection.hpp"
+#include "flowform/solvers/Mumps.hpp"
 
 namespace flowform {
 
 namespace {
 
-// --- KLU2 (Amesos2's sparse LU), one process; with Ordering ----------------------------------
-enum class Klu2Ordering { NestedDissection, Amd };
+// The fill-reducing ordering, one parameter for every solver that takes one.
+enum class FillOrdering { NestedDissection, Amd };
 
-void declareKlu2(Teuchos::ParameterList& valid) {
-  Teuchos::setStringToIntegralParameter<Klu2Ordering>(
+void declareOrdering(Teuchos::ParameterList& valid) {
+  Teuchos::setStringToIntegralParameter<FillOrdering>(
       "Ordering", "Nested Dissection",
-      "fill-reducing ordering for KLU2: Nested Dissection (METIS), AMD (Amesos2's KLU2 as shipped)",
+      "fill-reducing ordering: Nested Dissection (METIS; KLU2: METIS_NodeND, MUMPS: ICNTL(7) = 5) or AMD "
+      "(KLU2: Amesos2's KLU2 as shipped, no transposed solve; MUMPS: ICNTL(7) = 0)",
       Teuchos::tuple<std::string>("Nested Dissection", "AMD"),
-      Teuchos::tuple<Klu2Ordering>(Klu2Ordering::NestedDissection, Klu2Ordering::Amd), &valid);
+      Teuchos::tuple<FillOrdering>(FillOrdering::NestedDissection, FillOrdering::Amd), &valid);
 }
 
+FillOrdering orderingOf(const Teuchos::ParameterList& list) {
+  return Teuchos::getIntegralValue<FillOrdering>(list, "Ordering");
+}
+
+// --- KLU2 (Amesos2's sparse LU), one process -------------------------------------------------
 std::unique_ptr<LinearSolver> createKlu2(const Teuchos::ParameterList& list) {
-  if (Teuchos::getIntegralValue<Klu2Ordering>(list, "Ordering") == Klu2Ordering::Amd)
-    return std::make_unique<Klu2Amd>();
+  if (orderingOf(list) == FillOrdering::Amd) return std::make_unique<Klu2Amd>();
   return std::make_unique<Klu2NestedDissection>();
+}
+
+// --- MUMPS, every rank ---------------------------------------------------------------------------
+std::unique_ptr<LinearSolver> createMumps(const Teuchos::ParameterList& list) {
+  return std::make_unique<Mumps>(orderingOf(list) == FillOrdering::Amd ? Mumps::Ordering::Amd : Mumps::Ordering::Metis);
 }
 
 }  // namespace
 
 const std::vector<LinearSolverType>& linearSolverTypes() {
   static const std::vector<LinearSolverType> types = {
-      {"KLU2", "Amesos2's KLU2 sparse LU on one process (gathered to rank 0 under mpirun)", declareKlu2, createKlu2,
-       false},
+      {"KLU2", "Amesos2's KLU2 sparse LU on one process (gathered to rank 0 under mpirun)", declareOrdering,
+       createKlu2, false},
+      {"MUMPS", "multifrontal LU on every rank, the matrix given distributed", declareOrdering, createMumps, true},
   };
   return types;
 }
@@ -48,6 +60,7 @@ Teuchos::RCP<const Teuchos::ParameterList> validLinearSolverParameters() {
     doc += " " + t.name + " (" + t.description + ")";
   }
   Teuchos::setStringToIntegralParameter<int>("Type", names[0], doc, names(), valid.get());
+  // Types may share an entry (Ordering): declaring it again sets the same.
   for (const LinearSolverType& t : linearSolverTypes()) t.declareParameters(*valid);
   return valid;
 }

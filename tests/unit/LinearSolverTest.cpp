@@ -1,5 +1,6 @@
 // The direct solvers of the registry (LinearSolverRegistry: KLU2 with nested dissection and
-// with AMD; behind a GatheredSolver on 2 ranks), on matrices whose solution is known because
+// with AMD, behind a GatheredSolver on 2 ranks; MUMPS with both orderings, on the
+// distributed matrix), on matrices whose solution is known because
 // b = A x_exact (and b = Aᵀ x_exact for the transposed solve):
 //  - a non-symmetric convection–diffusion operator on a grid, several right-hand sides,
 //    solved with A and with Aᵀ from the same factors;
@@ -107,12 +108,14 @@ double solveError(LinearSolver& solver, const RCP<const CrsMatrix>& A, size_t k,
   return worst;
 }
 
-const char* const kOrderings[] = {"Nested Dissection", "AMD"};
+/// Every registered solver type with each ordering.
+const std::pair<const char*, const char*> kSolvers[] = {
+    {"KLU2", "Nested Dissection"}, {"KLU2", "AMD"}, {"MUMPS", "Nested Dissection"}, {"MUMPS", "AMD"}};
 
-/// The registry's KLU2 with that ordering, for matrices on the default communicator.
-std::unique_ptr<LinearSolver> klu2(const std::string& ordering) {
+/// The registry's solver of that type and ordering, for matrices on the default communicator.
+std::unique_ptr<LinearSolver> solverFor(const std::string& type, const std::string& ordering) {
   Teuchos::ParameterList list("Linear Solver");
-  list.set("Type", "KLU2");
+  list.set("Type", type);
   list.set("Ordering", ordering);
   list.validateParametersAndSetDefaults(*validLinearSolverParameters());
   return createLinearSolver(list, *Teuchos::DefaultComm<int>::getComm());
@@ -122,14 +125,14 @@ std::unique_ptr<LinearSolver> klu2(const std::string& ordering) {
 /// sides with the last one's factors. Checks the error and the counters.
 void checkFactorInTurn(const std::vector<RCP<const CrsMatrix>>& matrices, size_t k, Teuchos::FancyOStream& out,
                        bool& success) {
-  for (const char* o : kOrderings) {
-    const auto solver = klu2(o);
+  for (const auto& [type, o] : kSolvers) {
+    const auto solver = solverFor(type, o);
     out << solver->type() << ", " << solver->ordering() << "\n";
-    TEST_EQUALITY(solver->ordering(), std::string(o));
+    TEST_EQUALITY(solver->type(), std::string(type));
     for (const auto& A : matrices) solver->factor(A);
     const double error = solveError(*solver, matrices.back(), k);  // once: TEST_COMPARE evaluates twice
     TEST_COMPARE(error, <, kTolerance);
-    if (solver->ordering() == "AMD") {
+    if (!solver->supportsTranspose()) {
       // No transposed solve through Amesos2's KLU2 (Klu2Amd.cpp): it must refuse, not answer wrongly.
       MultiVector b(matrices.back()->getRowMap(), 1), x(matrices.back()->getRowMap(), 1);
       TEST_THROW(solver->solveTranspose(b, x), std::runtime_error);
@@ -138,7 +141,7 @@ void checkFactorInTurn(const std::vector<RCP<const CrsMatrix>>& matrices, size_t
       TEST_COMPARE(transposeError, <, kTolerance);
     }
     TEST_EQUALITY(solver->numFactorizations(), static_cast<int>(matrices.size()));
-    TEST_EQUALITY(solver->numSolves(), static_cast<int>(solver->ordering() == "AMD" ? k : 2 * k));
+    TEST_EQUALITY(solver->numSolves(), static_cast<int>(solver->supportsTranspose() ? 2 * k : k));
   }
 }
 
@@ -171,9 +174,9 @@ TEUCHOS_UNIT_TEST(LinearSolver, SingularMatrixThrowsOnEveryRank) {
     if (i < 99 && i + 1 != 7) e.push_back({i + 1, -1.0});
     return e;
   });
-  for (const char* o : kOrderings) {
-    out << o << "\n";
-    const auto solver = klu2(o);
+  for (const auto& [type, o] : kSolvers) {
+    out << type << ", " << o << "\n";
+    const auto solver = solverFor(type, o);
     std::string message;
     try {
       solver->factor(A);
