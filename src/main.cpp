@@ -2,6 +2,7 @@
 // Exit status: 0 converged, 2 bad input (nothing written), 3 not converged (results
 // written, flagged in summary.json).
 #include <filesystem>
+#include <unistd.h>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -36,6 +37,25 @@ void printHelp() {
       "valid parameters:\n";
   flowform::Simulation::validParameters()->print(
       std::cout, Teuchos::ParameterList::PrintOptions().showDoc(true).indent(2).showTypes(true));
+}
+
+}  // namespace
+
+namespace {
+
+/// The output directory must be a directory we can write, or creatable: its nearest existing
+/// ancestor a writable directory. InputError otherwise (exit 2, before any work).
+void checkOutputDirectory(const std::string& outDir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p = fs::absolute(outDir, ec);
+  if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+    throw flowform::InputError("-o '" + outDir + "' exists and is not a directory");
+  while (!fs::exists(p, ec) && p.has_parent_path() && p != p.parent_path()) p = p.parent_path();
+  if (!fs::is_directory(p, ec))
+    throw flowform::InputError("-o '" + outDir + "': '" + p.string() + "' is not a directory, so the output directory cannot be created");
+  if (access(p.c_str(), W_OK | X_OK) != 0)
+    throw flowform::InputError("-o '" + outDir + "': no permission to write in '" + p.string() + "'");
 }
 
 }  // namespace
@@ -75,6 +95,7 @@ int main(int argc, char* argv[]) {
     if (casePath.empty()) throw flowform::InputError("no case file given (usage: flowform CASE.xml; see --help)");
     if (!std::filesystem::exists(casePath)) throw flowform::InputError("case file '" + casePath + "' does not exist");
     if (outDir.empty()) outDir = "out/" + std::filesystem::path(casePath).stem().string();
+    checkOutputDirectory(outDir);  // before any work: a bad -o must not cost a solve
 
     Teuchos::RCP<Teuchos::ParameterList> params;
     try {

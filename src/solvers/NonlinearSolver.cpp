@@ -3,6 +3,8 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <sstream>
+#include <vector>
 
 #include <NOX.H>
 #include <NOX_Observer.hpp>
@@ -28,6 +30,12 @@ namespace {
 /// The residual then stays at about ε ||J|| ||x||, which atol (an absolute number) does not
 /// know: with velocities of order 10³ (channel, γ = 10³) it is 2.6·10⁻¹⁰ against
 /// atol = 10⁻¹⁰, and Newton would stagnate there until the iteration limit.
+/// The floor is also recognized when the line search cuts the steps (the residual is noise
+/// there, so it cannot decrease): converged when ||F|| has not halved over the last three
+/// iterations, the full Newton step ||Δx||/step is within the update tolerance, and ||F||
+/// is already below 10⁻⁶ ||F_0|| (so a Newton stuck far from a solution is never taken for
+/// it). Seen on the channel with n = 7, e0 = 10⁻⁵ (velocities ~10³): ||F|| stalls at
+/// 2·10⁻⁹ with full steps of 10⁻⁸ against ||x|| ~ 10⁴.
 class ResidualAndStepTest : public NOX::StatusTest::Generic {
  public:
   ResidualAndStepTest(double atol, double rtol, double utol) : m_atol(atol), m_rtol(rtol), m_utol(utol) {}
@@ -37,6 +45,7 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
     m_normF = group.getNormF();
     if (solver.getNumIterations() == 0) {
       m_normF0 = m_normF;
+      m_history.assign(1, m_normF);
       m_status = m_normF <= m_atol ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
       return m_status;
     }
@@ -49,7 +58,13 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
     m_step = 1.0;
     if (auto ls = dynamic_cast<const NOX::Solver::LineSearchBased*>(&solver)) m_step = ls->getStepSize();
     m_atRoundoff = !residualOk && m_step == 1.0 && m_normDx <= kRoundoffSteps * kEpsilon * normX;
-    m_status = (residualOk && stepOk) || m_atRoundoff ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+    m_history.push_back(m_normF);
+    const size_t k = m_history.size();
+    const bool fullStepOk = m_step > 0.0 && m_normDx / m_step <= m_utol * (normX + m_utol);
+    m_stagnated = !residualOk && k > 3 && m_normF > 0.5 * m_history[k - 4] && fullStepOk &&
+                  m_normF <= kFloorReduction * m_normF0;
+    m_status = (residualOk && stepOk) || m_atRoundoff || m_stagnated ? NOX::StatusTest::Converged
+                                                                     : NOX::StatusTest::Unconverged;
     return m_status;
   }
   NOX::StatusTest::StatusType getStatus() const override { return m_status; }
@@ -59,14 +74,20 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
     return os;
   }
   double normDx() const { return m_normDx; }
+  double initialNorm() const { return m_normF0; }
   /// The line-search step of the last iteration (1 for a full Newton step).
   double step() const { return m_step; }
   /// The last check converged by the round-off rule (the residual tests failed).
   bool atRoundoff() const { return m_atRoundoff; }
+  /// The last check converged because the residual stagnated at its floor.
+  bool stagnated() const { return m_stagnated; }
 
  private:
   static constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
   static constexpr double kRoundoffSteps = 1e3;
+  static constexpr double kFloorReduction = 1e-6;
+  std::vector<double> m_history;  ///< ||F|| of this solve's iterations
+  bool m_stagnated = false;
   double m_atol, m_rtol, m_utol;
   bool m_atRoundoff = false;
   double m_step = 1.0;
@@ -84,7 +105,8 @@ class NewtonLogger : public NOX::Observer {
     // |dx| and the step from the status test, which ran just before (docs/toolchain.md).
     log() << "    newton " << std::setw(2) << solver.getNumIterations() << "  |F| = " << std::scientific
           << std::setprecision(3) << normF << "  |dx| = " << m_test.normDx() << "  step = " << std::defaultfloat
-          << m_test.step() << (m_test.atRoundoff() ? "  (converged: update at round-off)" : "") << "\n";
+          << m_test.step() << (m_test.atRoundoff() ? "  (converged: update at round-off)" : "")
+          << (m_test.stagnated() ? "  (converged: residual stagnated at its round-off floor)" : "") << "\n";
   }
 
  private:
@@ -92,6 +114,13 @@ class NewtonLogger : public NOX::Observer {
 };
 
 bool isFinite(const Vector& v) { return std::isfinite(v.norm2()); }
+
+/// A number for a message: 3 significant digits, never "0.000000" for a small one.
+std::string formatNumber(double v) {
+  std::ostringstream os;
+  os << std::setprecision(3) << v;
+  return os.str();
+}
 
 }  // namespace
 
@@ -193,6 +222,7 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics) {
 
   report.newtonIterations = solver->getNumIterations();
   report.residualNorm = solver->getSolutionGroup().getNormF();
+  report.initialResidualNorm = residualTest->initialNorm();
   report.converged = status == NOX::StatusTest::Converged && std::isfinite(report.residualNorm);
   if (report.converged) Tpetra::deep_copy(x, *tpetraVector(solver->getSolutionGroup().getX()));
   return report;
@@ -231,7 +261,7 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target) {
     report.converged = std::isfinite(report.residualNorm) && report.residualNorm <= std::max(atol, 10 * rtol * normF0);
     log() << "  linear solve: |F| = " << std::scientific << std::setprecision(3) << normF0 << " -> "
           << report.residualNorm << std::defaultfloat << "\n";
-    if (!report.converged) report.message = "the linear solve left a residual " + std::to_string(report.residualNorm);
+    if (!report.converged) report.message = "the linear solve left a residual |F| = " + formatNumber(report.residualNorm);
     return report;
   }
 
@@ -283,9 +313,12 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target) {
       log() << "  stage failed after " << sr.newtonIterations << " iterations (|F| = " << sr.residualNorm
             << "); step -> " << step << "\n";
       if (step < minStep || !needsContinuation) {
-        report.message = "Newton did not converge at n = " + std::to_string(stage.material.rateExponent) +
-                         ", e0 = " + std::to_string(stage.material.cutoff) + " (|F| = " +
-                         std::to_string(sr.residualNorm) + ")";
+        report.message = "Newton did not converge at n = " + formatNumber(stage.material.rateExponent) +
+                         ", e0 = " + formatNumber(stage.material.cutoff) + ": |F| = " + formatNumber(sr.residualNorm) +
+                         " after " + std::to_string(sr.newtonIterations) + " iterations, against the tolerance " +
+                         formatNumber(std::max(m_params.get<double>("Absolute Residual Tolerance"),
+                                               m_params.get<double>("Relative Residual Tolerance") * sr.initialResidualNorm)) +
+                         " (continuation step " + formatNumber(step) + " below the minimum " + formatNumber(minStep) + ")";
         Tpetra::deep_copy(x, xConverged);
         m_model.setPhysics(target);
         return report;

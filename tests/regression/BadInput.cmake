@@ -25,7 +25,7 @@ set(FLOWFORM_CHECK_EXIT ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_exit.py)
 #   contains each CONTAINS text, and that nothing was written (or, with CONVERGED, that
 #   summary.json says converged). NP n > 1 runs it under mpiexec on n ranks.
 function(flowform_exit_test name)
-  cmake_parse_arguments(ARG "CONVERGED" "CASE;STATUS;NP" "SET;ARGS;CONTAINS" ${ARGN})
+  cmake_parse_arguments(ARG "CONVERGED;OUTDIR_IS_A_FILE" "CASE;STATUS;NP" "SET;ARGS;CONTAINS" ${ARGN})
   if(NOT DEFINED ARG_STATUS)
     set(ARG_STATUS 2)
   endif()
@@ -36,6 +36,8 @@ function(flowform_exit_test name)
   endforeach()
   if(ARG_CONVERGED)
     list(APPEND check --converged)
+  elseif(ARG_OUTDIR_IS_A_FILE)
+    list(APPEND check --outdir-is-a-file)
   else()
     list(APPEND check --no-output)
   endif()
@@ -58,6 +60,10 @@ endfunction()
 
 # --- the good case: the base of every bad one runs -------------------------------------------
 flowform_exit_test(regression_good_channel_small CASE channel_small.xml STATUS 0 CONVERGED)
+
+# --- the output directory: checked before any work (a solve is not lost to a bad -o) ------------
+flowform_exit_test(bad_input_outdir_is_a_file CASE channel_small.xml OUTDIR_IS_A_FILE
+  CONTAINS "exists and is not a directory")
 
 # --- the case file -----------------------------------------------------------------------------
 flowform_exit_test(bad_input_malformed_xml CASE malformed.xml

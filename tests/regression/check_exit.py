@@ -2,7 +2,7 @@
 """Runs one flowform command and checks how it ended (tests/regression/BadInput.cmake).
 
 usage: check_exit.py --outdir DIR [--status N] [--stderr-contains TEXT ...]
-                     [--no-output | --converged] -- COMMAND ...
+                     [--no-output | --converged | --outdir-is-a-file] -- COMMAND ...
 
   --outdir DIR           the output directory the command was given (-o DIR); removed first,
                          so a result from an earlier run cannot pass the check
@@ -10,6 +10,7 @@ usage: check_exit.py --outdir DIR [--status N] [--stderr-contains TEXT ...]
   --stderr-contains T    stderr must contain T (repeatable; case-sensitive)
   --no-output            DIR must not exist afterwards (bad input writes nothing)
   --converged            DIR/summary.json must exist and say "converged": true
+  --outdir-is-a-file     DIR is made a regular file first and must be left as it was
 
 Prints the command, its status and its output, then each failed check; exits 0 when every
 check passes, 1 otherwise.
@@ -34,6 +35,8 @@ def main():
     mode = parser.add_mutually_exclusive_group()
     mode.add_argument("--no-output", action="store_true")
     mode.add_argument("--converged", action="store_true")
+    mode.add_argument("--outdir-is-a-file", action="store_true",
+                      help="make DIR a regular file first; it must be left as it was")
     parser.add_argument("--timeout", type=float, default=600)
     args = parser.parse_args(sys.argv[1:split])
     command = sys.argv[split + 1:]
@@ -41,6 +44,13 @@ def main():
         sys.exit("check_exit.py: no command after '--'")
 
     shutil.rmtree(args.outdir, ignore_errors=True)
+    marker = "flowform must leave this file alone\n"
+    if args.outdir_is_a_file:
+        if os.path.isfile(args.outdir):
+            os.remove(args.outdir)
+        os.makedirs(os.path.dirname(os.path.abspath(args.outdir)), exist_ok=True)
+        with open(args.outdir, "w") as f:
+            f.write(marker)
     print("command:", launcher.command_line(command))
     run = launcher.run_command(command, capture=True, timeout=args.timeout)
     if run.timed_out:
@@ -61,6 +71,13 @@ def main():
     if args.no_output and os.path.exists(args.outdir):
         written = sorted(os.listdir(args.outdir)) if os.path.isdir(args.outdir) else []
         failures.append(f"output directory {args.outdir} was created (contents: {written})")
+    if args.outdir_is_a_file:
+        try:
+            with open(args.outdir) as f:
+                if f.read() != marker:
+                    failures.append(f"{args.outdir} was changed")
+        except OSError as e:
+            failures.append(f"{args.outdir} is no longer a readable file: {e}")
     if args.converged:
         path = os.path.join(args.outdir, "summary.json")
         try:

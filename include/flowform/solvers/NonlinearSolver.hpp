@@ -30,6 +30,7 @@ struct StageReport {
   int newtonIterations;
   bool converged;
   double residualNorm;
+  double initialResidualNorm = 0.0;  ///< ||F|| at the stage's start (its relative tolerance's scale)
 };
 
 struct SolveReport {
