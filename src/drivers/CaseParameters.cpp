@@ -117,6 +117,11 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
       .sublist("<response name>", false, "one functional")
       .setParameters(*Responses::validParameters());
   ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (docs/theory.md §2)");
+  contact.set("Re-solve Tolerance", 0.0,
+              "relative residual ||F|| / ||F_0|| at which a re-solve after a status change stops when the next "
+              "change is read from it; the state that needs no change is then converged to the Solver tolerances "
+              "and checked again. 0: every re-solve to the Solver tolerances",
+              Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1.0)));
   contact.set("Max Status Changes", 500, "give up (not converged) after this many changes",
               Teuchos::rcp(new EnhancedNumberValidator<int>(0, 1000000)));
   contact.set("Max Changes Per Node", 4,

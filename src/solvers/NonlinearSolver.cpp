@@ -188,15 +188,19 @@ double NonlinearSolver::linearSolve(Vector& x, const FlowPhysics& physics) {
   return f.norm2();
 }
 
-StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics) {
+StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, double looseTolerance) {
   m_model.setPhysics(physics);
   if (m_beforeNewton) m_beforeNewton(x);
   StageReport report{physics.material.rateExponent, physics.material.cutoff, 0, false, 0.0};
 
   auto group = Teuchos::rcp(new FlowGroup(m_model, x));
-  auto residualTest = Teuchos::rcp(new ResidualAndStepTest(m_params.get<double>("Absolute Residual Tolerance"),
-                                                           m_params.get<double>("Relative Residual Tolerance"),
-                                                           m_params.get<double>("Update Tolerance")));
+  // A loose solve (looseTolerance > 0) stops at ||F|| ≤ looseTolerance ||F_0|| with the
+  // update test relaxed alike; the tight tolerances otherwise.
+  const bool loose = looseTolerance > 0.0;
+  auto residualTest = Teuchos::rcp(new ResidualAndStepTest(
+      m_params.get<double>("Absolute Residual Tolerance"),
+      loose ? looseTolerance : m_params.get<double>("Relative Residual Tolerance"),
+      loose ? std::max(looseTolerance, m_params.get<double>("Update Tolerance")) : m_params.get<double>("Update Tolerance")));
   auto maxIters = Teuchos::rcp(new NOX::StatusTest::MaxIters(m_params.get<int>("Max Newton Iterations")));
   auto finite = Teuchos::rcp(new NOX::StatusTest::FiniteValue);
   auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
@@ -228,10 +232,10 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics) {
   return report;
 }
 
-SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target) {
+SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, double looseTolerance) {
   if (isNewtonian(target.material)) return solve(x, target);
   Vector start(x, Teuchos::Copy);
-  StageReport sr = newton(x, target);
+  StageReport sr = newton(x, target, looseTolerance);
   SolveReport report;
   report.stages.push_back(sr);
   report.newtonIterations = sr.newtonIterations;
@@ -288,14 +292,20 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target) {
   const double minStep = cont.get<double>("Minimum Step");
   const double growth = cont.get<double>("Growth Factor");
 
+  // The physics at λ: n and e0 interpolated geometrically, exactly the target at λ = 1.
+  auto stageAt = [&](double l) {
+    FlowPhysics stage = target;
+    stage.material.rateExponent = std::pow(nStart, 1.0 - l) * std::pow(target.material.rateExponent, l);
+    stage.material.cutoff = std::pow(e0Start, 1.0 - l) * std::pow(target.material.cutoff, l);
+    if (l == 1.0) stage.material = target.material;  // no rounding
+    return stage;
+  };
+
   double lambda = 0.0;
   Vector xConverged(x, Teuchos::Copy);
   while (lambda < 1.0) {
     const double next = std::min(1.0, lambda + step);
-    FlowPhysics stage = target;
-    stage.material.rateExponent = std::pow(nStart, 1.0 - next) * std::pow(target.material.rateExponent, next);
-    stage.material.cutoff = std::pow(e0Start, 1.0 - next) * std::pow(target.material.cutoff, next);
-    if (next == 1.0) stage.material = target.material;  // exactly the target, no rounding
+    const FlowPhysics stage = stageAt(next);
     log() << "  stage lambda = " << next << ": n = " << stage.material.rateExponent
           << ", e0 = " << stage.material.cutoff << "\n";
     Tpetra::deep_copy(x, xConverged);

@@ -33,6 +33,7 @@ class ContactStatusLoop {
  private:
   int m_maxChanges, m_maxPerNode;
   double m_pressureTolerance, m_penetrationTolerance;
+  double m_resolveTolerance;  ///< relative residual of the intermediate re-solves (0: tight)
   const Mesh& m_mesh;
   const DofMap& m_dofMap;
 };

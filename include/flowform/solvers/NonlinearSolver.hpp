@@ -64,8 +64,10 @@ class NonlinearSolver {
   SolveReport solve(Vector& x, const FlowPhysics& target);
 
   /// Solves again after a small change (a contact status change): Newton at the target
-  /// from x; if that fails, the full solve() (predictor and continuation).
-  SolveReport resolve(Vector& x, const FlowPhysics& target);
+  /// from x; if that fails, the full solve() (predictor and continuation). With
+  /// `looseTolerance` > 0 Newton stops once ||F|| ≤ looseTolerance ||F_0|| (an intermediate
+  /// state the contact loop only reads its next change from).
+  SolveReport resolve(Vector& x, const FlowPhysics& target, double looseTolerance = 0.0);
 
   /// Called with the current x before every Newton solve (each continuation stage, each
   /// re-solve): the contact walls take their penalty scales from it.
@@ -73,7 +75,7 @@ class NonlinearSolver {
 
  private:
   /// One Newton solve at the model's current physics; returns iterations, sets converged.
-  StageReport newton(Vector& x, const FlowPhysics& physics);
+  StageReport newton(Vector& x, const FlowPhysics& physics, double looseTolerance = 0.0);
   /// x += −J⁻¹ F(x): exact for a linear problem.
   double linearSolve(Vector& x, const FlowPhysics& physics);
 
