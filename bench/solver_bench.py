@@ -111,7 +111,7 @@ def series(args, out, part, sizes, configs):
         k, count = 0, 1
         while k < count:
             for label, solver, np, threads in configs:
-                print(f"  N={n} {solver} {label} r{k}")
+                print(f"  N={n} {solver}{'' if label == solver else ' ' + label} r{k}")
                 row["runs"][label].append(run(args, repo_path("xml", "channel.xml"), os.path.join(
                     out, f"{part}_N{n}_{label.replace(' ', '_')}_r{k}"), channel_sets(n, solver), np, threads))
             count = count if k else repeats(args, max(v[0]["wall"] for v in row["runs"].values()))
@@ -255,7 +255,7 @@ def table_a(a):
 
 def table_b(b):
     print("\n(b) MUMPS (ND): ranks × OpenBLAS threads; medians; rel. diff. of the responses vs np1 T1")
-    line("N", "dofs", "config", "reps", "fact s", "total s", "peak RSS MiB (largest rank)", "max rel. diff.", "load")
+    line("N", "dofs", "config", "reps", "fact s", "total s", "peak RSS MiB (max rank)", "max rel. diff.", "load")
     print("|" + "---|" * 9)
     for row in b["rows"]:
         ref = row["runs"]["np1 T1"][0]

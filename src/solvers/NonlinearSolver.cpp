@@ -157,7 +157,9 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
   Teuchos::ParameterList& cont = valid->sublist("Continuation", false, "continuation in n and e0");
   cont.set("Start Exponent", 1.0, "n at the first stage", positive);
   cont.set("Start Cutoff", 0.1, "e0 at the first stage (if larger than the target's)", positive);
-  cont.set("Initial Step", 0.25, "first step in the continuation parameter λ ∈ (0, 1]",
+  cont.set("Initial Step", 0.25,
+           "first step in the continuation parameter λ ∈ (0, 1]; 1 tries the target at once and halves on failure "
+           "(fewer Newton iterations on every scene, but one sticking-limit extrusion then fails: docs/verification.md §6)",
            Teuchos::rcp(new EnhancedNumberValidator<double>(1e-6, 1.0)));
   cont.set("Minimum Step", 1.0 / 256, "give up when a failed stage halves the step below this",
            Teuchos::rcp(new EnhancedNumberValidator<double>(1e-12, 1.0)));

@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Stress battery of the nonlinear solve: cases at the edges of the parameter ranges a user
+may set, each of which must converge (exit 0, converged: true) and give finite responses.
+Each case is one line of CASES: a name, the case file and its --set overrides. A group
+(`channel`, `extrusion`, `extrusion-slow`) is one ctest test (tests/regression/Stress.cmake).
+
+    stress_checks.py GROUP FLOWFORM SOURCE_DIR OUT_DIR
+
+Prints one line per case (exit status, Newton iterations, contact changes, seconds, the
+first response) and a closing 'N passed, N failed' line; exit status 1 when any failed.
+"""
+import math
+import os
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from flowform_tools import launcher  # noqa: E402
+from flowform_tools.case import Case  # noqa: E402
+
+CH = "xml/channel.xml"
+EX = "xml/extrusion.xml"
+COARSE = ["Mesh/Geo Parameters/h=0.2", "Mesh/Geo Parameters/hc=0.05"]  # extrusion, seconds per run
+
+
+def channel(name, *sets):
+    return (name, CH, ["Mesh/Geo Parameters/N=8.0"] + list(sets))
+
+
+def walls(case_file, key, value):
+    """`Boundary Conditions/<wall>/<key>=<value>` for every contact wall of the case."""
+    return [f"Boundary Conditions/{w}/{key}={value}" for w in Case(case_file).contact_walls()]
+
+
+def extrusion(name, source, *sets, walls_set=None):
+    extra = walls(os.path.join(source, EX), *walls_set) if walls_set else []
+    return (name, EX, COARSE + list(sets) + extra)
+
+
+def groups(source):
+    return {
+        "channel": [
+            channel("gamma_1e-3", "Material/Rate Constant=1e-3"),
+            channel("gamma_1e3", "Material/Rate Constant=1e3"),
+            channel("e0_1e-6", "Material/Strain Rate Cutoff=1e-6"),
+            channel("e0_1e-2", "Material/Strain Rate Cutoff=1e-2"),
+            channel("n_1", "Material/Rate Exponent=1.0"),
+            channel("n_100", "Material/Rate Exponent=100.0"),
+            ("stall_n7_e0_1e-5", CH, ["Mesh/Geo Parameters/N=32.0", "Material/Yield Stress=0.3",
+                                      "Material/Rate Constant=2.0", "Material/Rate Exponent=7.0",
+                                      "Material/Strain Rate Cutoff=1e-5",
+                                      "Boundary Conditions/inlet/Traction X=5.2"]),
+        ],
+        "extrusion": [
+            extrusion("sigma0_0", source, "Material/Yield Stress=0.0"),
+            extrusion("nu_2", source, walls_set=("Friction Coefficient", "2.0")),
+            extrusion("kappa_t_1e2", source, walls_set=("Tangential Penalty Factor", "100.0")),
+        ],
+        "extrusion-slow": [
+            ("default_mesh_kappa_t_100_nu_0.2", EX,
+             ["Mesh/Geo Parameters/hc=0.005"] + walls(os.path.join(source, EX), "Tangential Penalty Factor", "100.0")
+             + walls(os.path.join(source, EX), "Friction Coefficient", "0.2")),
+            extrusion("nu_5", source, walls_set=("Friction Coefficient", "5.0")),
+            extrusion("kappa_t_1e4", source, walls_set=("Tangential Penalty Factor", "1e4")),
+            extrusion("kappa_t_1e6", source, walls_set=("Tangential Penalty Factor", "1e6")),
+            extrusion("kappa_t_1e8", source, walls_set=("Tangential Penalty Factor", "1e8")),
+            extrusion("n_100", source, "Material/Rate Exponent=100.0"),
+            extrusion("e0_1e-5", source, "Material/Strain Rate Cutoff=1e-5"),
+            channel("gamma_1e6", "Material/Rate Constant=1e6"),
+        ],
+    }
+
+
+def main():
+    if len(sys.argv) != 5:
+        sys.exit(__doc__)
+    group, flowform, source, out = sys.argv[1:5]
+    cases = groups(source).get(group)
+    if cases is None:
+        sys.exit(f"stress_checks.py: unknown group '{group}'; known: {', '.join(groups(source))}")
+    passed = failed = 0
+    for name, case, sets in cases:
+        start = time.time()
+        r = launcher.run(flowform, os.path.join(source, case), os.path.join(out, name), sets, quiet=True,
+                         timeout=900)
+        s = r.summary or {}
+        values = list((s.get("functionals") or {}).values())
+        finite = all(isinstance(v, (int, float)) and math.isfinite(v) for v in values)
+        ok = r.status == 0 and s.get("converged") is True and finite
+        passed += ok
+        failed += not ok
+        first = f"{values[0]:.6g}" if values else "-"
+        print(f"{'ok  ' if ok else 'FAIL'} {name:36s} exit {r.status}  newton {s.get('newton_iterations', '-'):>4}  "
+              f"contact changes {s.get('contact_changes', '-'):>3}  {time.time() - start:6.1f} s  first response {first}"
+              + ("" if ok else f"  message: {s.get('message', '(no summary)')}"))
+    print(f"{passed} passed, {failed} failed")
+    return 0 if failed == 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
