@@ -224,7 +224,17 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, doubl
   noxParams->sublist("Solver Options").set<Teuchos::RCP<NOX::Observer>>("Observer",
                                                                            Teuchos::rcp(new NewtonLogger(*residualTest)));
   auto solver = NOX::Solver::buildSolver(group, tests, noxParams);
-  const NOX::StatusTest::StatusType status = solver->solve();
+  // NOX throws (a const char*, or a std::exception) when a step cannot be computed, e.g.
+  // a singular Jacobian the factorization refused (FlowGroup logs why): that is a failed
+  // solve, reported as such, never an abort.
+  NOX::StatusTest::StatusType status = NOX::StatusTest::Failed;
+  try {
+    status = solver->solve();
+  } catch (const char* what) {
+    log() << "  Newton stopped: " << what << "\n";
+  } catch (const std::exception& e) {
+    log() << "  Newton stopped: " << e.what() << "\n";
+  }
 
   report.newtonIterations = solver->getNumIterations();
   report.residualNorm = solver->getSolutionGroup().getNormF();
