@@ -17,6 +17,17 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
                            std::vector<ContactWall>& walls, SolveReport& report) const {
   int changes = 0;
   bool tight = true;  // whether x is a tightly converged solution (the first solve's is)
+  // One re-solve from x, recorded in the report (`loose`: the relative tolerance, 0 tight).
+  auto resolve = [&](double loose) {
+    const SolveReport again = solver.resolve(x, physics, loose);
+    tight = loose <= 0.0;
+    report.newtonIterations += again.newtonIterations;
+    report.newtonPerSolve.push_back(again.newtonIterations);
+    report.restarts += again.restarts;
+    report.converged = again.converged;
+    report.residualNorm = again.residualNorm;
+    if (!again.converged) report.message = "after contact change " + std::to_string(changes) + ": " + again.message;
+  };
   while (report.converged) {
     // The largest violation over all walls, at a limit of a contact zone (docs/theory.md §2).
     int wallIndex = -1, unsettled = 0;
@@ -36,14 +47,7 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
     }
     if (wallIndex < 0 && !tight) {
       // No change read from a loosely solved state: converge it tightly and look again.
-      const SolveReport again = solver.resolve(x, physics);
-      report.newtonIterations += again.newtonIterations;
-      report.newtonPerSolve.push_back(again.newtonIterations);
-      report.restarts += again.restarts;
-      report.converged = again.converged;
-      report.residualNorm = again.residualNorm;
-      if (!again.converged) report.message = "after contact change " + std::to_string(changes) + ": " + again.message;
-      tight = true;
+      resolve(0.0);
       continue;
     }
     if (wallIndex < 0) {
@@ -68,14 +72,7 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
     ++changes;
     // The next change is read from this state: a loose solve suffices while changes follow;
     // the last state is converged tightly above.
-    const SolveReport again = solver.resolve(x, physics, m_resolveTolerance);
-    tight = m_resolveTolerance <= 0.0;
-    report.newtonIterations += again.newtonIterations;
-    report.newtonPerSolve.push_back(again.newtonIterations);
-    report.restarts += again.restarts;
-    report.converged = again.converged;
-    report.residualNorm = again.residualNorm;
-    if (!again.converged) report.message = "after contact change " + std::to_string(changes) + ": " + again.message;
+    resolve(m_resolveTolerance);
   }
   log() << "contact: " << changes << " status change(s)\n";
   return changes;
