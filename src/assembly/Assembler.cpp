@@ -85,7 +85,8 @@ void Assembler::assembleCellsOf(Workset& ws, const SensitivityParameter* h, bool
     m_dofMap.cellDofs(k, dofs);
     gather(ws, dofs, N, values);
     std::fill(res, res + N, Scalar(0.0));
-    addFlowResidual(g.rule, g.centroid, g.diameter, m_physics.kernel, material, values, res);
+    StressDualPoint* dual = ws.dual ? ws.dual->cells.cell(k, m_dofMap.cells().size()) : nullptr;
+    addFlowResidual(g.rule, g.centroid, g.diameter, m_physics.kernel, material, values, res, dual);
     if (applyConstraints)
       for (int a = 0; a < NumNodes; ++a) applyConstraintRows(constraints[nodes[a]], res + EqualOrderLayout::index(a, 0));
     scatter(ws, dofs, N, dofs, N, res);
@@ -103,13 +104,15 @@ void Assembler::assembleContact(Workset& ws, const SensitivityParameter* h, bool
   for (size_t w = 0; w < m_walls->size(); ++w)
     friction.push_back(frictionFor<PScalar>((*m_walls)[w], static_cast<int>(w), h));
   const auto& constraints = m_bcs.constraints();
-  for (const WallNodeRef& r : m_wallNodes) {
+  for (size_t i = 0; i < m_wallNodes.size(); ++i) {
+    const WallNodeRef& r = m_wallNodes[i];
     auto pressureDof = [&](LO n) { return n < 0 ? LO(-1) : m_dofMap.dof(n, kP); };
     const LO dofs[N] = {m_dofMap.dof(r.node, kUx), m_dofMap.dof(r.node, kUy), pressureDof(r.previous),
                         pressureDof(r.node), pressureDof(r.next)};
     Scalar values[N], R[2] = {0.0, 0.0};
     gather(ws, dofs, N, values);
-    (*m_walls)[r.wall].addNodeResidual(r.k, friction[r.wall], values, values + 2, R);
+    FrictionDualPoint* dual = ws.dual ? ws.dual->wallNode(i, m_wallNodes.size()) : nullptr;
+    (*m_walls)[r.wall].addNodeResidual(r.k, friction[r.wall], values, values + 2, R, dual);
     if (applyConstraints) applyConstraintRows(constraints[r.node], R);
     scatter(ws, dofs, 2, dofs, N, R);
   }
@@ -180,7 +183,7 @@ void Assembler::residual(const Vector& xOwned, Vector& fOwned, bool applyConstra
   fOwned.doExport(*m_fOverlap, *m_dofMap.exporter(), Tpetra::ADD);
 }
 
-void Assembler::jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fOwned) const {
+void Assembler::jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fOwned, NewtonDual* dual) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: assembly (Jacobian)"));
   const Vector& xOverlap = importSolution(xOwned);
   if (fOwned) m_fOverlap->putScalar(0.0);
@@ -188,6 +191,7 @@ void Assembler::jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fO
   jacobian.setAllToScalar(0.0);
   {
     Workset ws = workset(xOverlap, nullptr, fOwned ? m_fOverlap.get() : nullptr, &jacobian);
+    ws.dual = dual;
     assembleCells<JacobianEval>(ws, nullptr, true);
     if (m_walls) assembleContact<JacobianEval>(ws, nullptr, true);
     addConstraintRows(ws.x, ws);

@@ -95,6 +95,7 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
     m_jacobianOffset = 0.0;
     m_jacobianUsed = "converged";
     try {
+      model.restartLinearization();  // K_t exact at the converged q
       model.computeJacobian(x);
     } catch (const std::exception& e) {  // a singular K_t: no sensitivities, exit 3
       log() << "sensitivity: " << e.what() << "\n";

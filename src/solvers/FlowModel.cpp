@@ -13,7 +13,7 @@ void FlowModel::residual(const Vector& x, Vector& f) {
 void FlowModel::assembleJacobian(const Vector& x) {
   ++m_numJacobians;
   m_jacobianValid = false;
-  m_assembler.jacobian(x, *m_jacobian);
+  m_assembler.jacobian(x, *m_jacobian, nullptr, m_useDual ? &m_dual : nullptr);
   if (m_jacobianPoint.is_null()) m_jacobianPoint = Teuchos::rcp(new Vector(x.getMap()));
   Tpetra::deep_copy(*m_jacobianPoint, x);
 }

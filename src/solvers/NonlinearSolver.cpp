@@ -153,6 +153,11 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
   Teuchos::setStringToIntegralParameter<int>(
       "Line Search", "Backtrack", "NOX line search: Backtrack (halving on ||F||), Polynomial, Full Step",
       Teuchos::tuple<std::string>("Backtrack", "Polynomial", "Full Step"), valid.get());
+  Teuchos::setStringToIntegralParameter<int>(
+      "Newton Linearization", "Stress-Velocity",
+      "Stress-Velocity: the viscoplastic stress linearized with a dual stress variable (docs/theory.md §9; "
+      "same converged state, fewer iterations); Exact: the exact tangent",
+      Teuchos::tuple<std::string>("Stress-Velocity", "Exact"), valid.get());
   valid->set("Linear Solver", *validLinearSolverParameters(), "the direct solver of the Newton systems");
   Teuchos::ParameterList& cont = valid->sublist("Continuation", false, "continuation in n and e0");
   cont.set("Start Exponent", 1.0, "n at the first stage", positive);
@@ -171,6 +176,7 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
 NonlinearSolver::NonlinearSolver(FlowModel& model, const Teuchos::ParameterList& params)
     : m_model(model), m_params(params) {
   m_params.validateParametersAndSetDefaults(*validParameters());
+  m_model.useStressDual(m_params.get<std::string>("Newton Linearization") == "Stress-Velocity");
 }
 
 double NonlinearSolver::linearSolve(Vector& x, const FlowPhysics& physics) {
@@ -192,6 +198,7 @@ double NonlinearSolver::linearSolve(Vector& x, const FlowPhysics& physics) {
 
 StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, double looseTolerance) {
   m_model.setPhysics(physics);
+  m_model.restartLinearization();
   if (m_beforeNewton) m_beforeNewton(x);
   StageReport report{physics.material.rateExponent, physics.material.cutoff, 0, false, 0.0};
 

@@ -48,7 +48,10 @@ class Assembler {
   void residual(const Vector& xOwned, Vector& fOwned, bool applyConstraints = true) const;
 
   /// J = dF/dx at x into `jacobian` (built on dofMap.graph()); F(x) too when `fOwned` is given.
-  void jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fOwned = nullptr) const;
+  /// With `dual`, the cells' stress and the walls' slip are linearized by the dual methods
+  /// and the duals are moved to x first (assembly/NewtonDual.hpp); without, J is exact.
+  void jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fOwned = nullptr,
+                NewtonDual* dual = nullptr) const;
 
   /// The directional derivative d/dε F(x + ε dx; h + ε) at ε = 0, into `dfOwned`: J dx +
   /// ∂F/∂h. `dxOwned` null: no motion of x; `h` null: no parameter. With `applyConstraints`

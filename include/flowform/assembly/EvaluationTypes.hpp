@@ -24,6 +24,7 @@
 #include "flowform/core/TpetraTypes.hpp"
 #include "flowform/discretization/DofMap.hpp"
 #include "flowform/physics/Material.hpp"
+#include "flowform/assembly/NewtonDual.hpp"
 
 namespace flowform {
 
@@ -95,6 +96,7 @@ struct Workset {
   HostViewRW f;
   bool hasResidual = false;
   FECrsMatrix* jacobian = nullptr;
+  NewtonDual* dual = nullptr;  ///< Jacobian only: the dual linearizations (null: exact)
 };
 
 /// The element's dofs at overlap dofs `dofs[0..n)` (−1: an absent neighbour, value 0 and

@@ -132,8 +132,10 @@ class ContactWall {
   /// previous(k), k, next(k) (an absent neighbour's is ignored). Adds into R[2]. The
   /// friction parameters are `fp` (PScalar: double, or an AD type when ∂/∂ν, ∂/∂m are
   /// wanted; Scalar must then be an AD type of the same kind).
+  /// `dual` (Jacobian evaluations only) selects the dual slip linearization (FrictionDual.hpp).
   template <typename Scalar, typename PScalar>
-  void addNodeResidual(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p, Scalar* R) const;
+  void addNodeResidual(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p, Scalar* R,
+                       FrictionDualPoint* dual = nullptr) const;
   template <typename Scalar>
   void addNodeResidual(int k, const Scalar* u, const Scalar* p, Scalar* R) const {
     addNodeResidual(k, frictionParameters(), u, p, R);
@@ -142,7 +144,7 @@ class ContactWall {
   /// Tangential force g_k (positive along t_k) and the branch of the law it is on.
   template <typename Scalar, typename PScalar>
   Scalar tangentialForce(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
-                         FrictionBranch* branch = nullptr) const;
+                         FrictionBranch* branch = nullptr, FrictionDualPoint* dual = nullptr) const;
   /// g_k with the case's ν, m, and whether the node sticks, for output.
   template <typename Scalar>
   Scalar tangentialForce(int k, const Scalar* u, const Scalar* p, bool* sticks = nullptr) const {
@@ -212,14 +214,14 @@ void ContactWall::lumpSegmentIntegrals(int k, const Scalar* p, FrictionNodeData<
 
 template <typename Scalar, typename PScalar>
 Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
-                                    FrictionBranch* branch) const {
+                                    FrictionBranch* branch, FrictionDualPoint* dual) const {
   if (!m_active[k]) {
     if (branch) *branch = FrictionBranch::Free;
     return Scalar(0.0);
   }
   const auto& n = m_curve.normals[k];
   FrictionNodeData<Scalar> d{-n[1] * u[0] + n[0] * u[1],  // u·t, t = (−n_y, n_x)
-                             Scalar(0.0), 0.0, 0.0, m_settings.tangentialPenalty * m_viscosity[k] * weight(k)};
+                             Scalar(0.0), 0.0, 0.0, m_settings.tangentialPenalty * m_viscosity[k] * weight(k), dual};
   lumpSegmentIntegrals(k, p, d);
   const FrictionForce<Scalar> f = frictionForce(m_settings.law, d, fp, m_settings.friction);
   if (branch) *branch = f.branch;
@@ -228,14 +230,14 @@ Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp
 
 template <typename Scalar, typename PScalar>
 void ContactWall::addNodeResidual(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
-                                  Scalar* R) const {
+                                  Scalar* R, FrictionDualPoint* dual) const {
   if (!m_active[k]) return;
   const auto& n = m_curve.normals[k];
   const double alphaN = m_settings.normalPenalty * m_viscosity[k] * weight(k);
   const Scalar un = n[0] * u[0] + n[1] * u[1];
   R[0] += alphaN * un * n[0];
   R[1] += alphaN * un * n[1];
-  const Scalar g = tangentialForce(k, fp, u, p);
+  const Scalar g = tangentialForce(k, fp, u, p, nullptr, dual);
   R[0] += g * (-n[1]);
   R[1] += g * n[0];
 }

@@ -15,11 +15,13 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 
 #include "flowform/core/Types.hpp"
 #include "flowform/discretization/CellGeometry.hpp"
 #include "flowform/discretization/ElementLayout.hpp"
 #include "flowform/physics/Material.hpp"
+#include "flowform/physics/StressDual.hpp"
 
 namespace flowform {
 
@@ -71,11 +73,13 @@ Scalar stabilizationTau(double beta, double hK, const Scalar& muK) {
 
 /// Adds the cell residual (EqualOrderLayout: u_x, u_y, p per node, node-major) into `residual`.
 /// `cq` is the integration rule, `centroid` a one-point rule at the centroid (for μ_K),
-/// `hK` the cell diameter.
+/// `hK` the cell diameter. `dual` (the cell's points, Jacobian evaluations only; null: the
+/// exact tangent) selects the stress–velocity linearization of s (physics/StressDual.hpp) and
+/// is moved to this iterate first; the values are the same either way.
 template <typename Scalar, typename PScalar>
 void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, double hK,
                      const FlowKernelSettings& settings, const MaterialParameters<PScalar>& material,
-                     const Scalar* dofs, Scalar* residual) {
+                     const Scalar* dofs, Scalar* residual, StressDualPoint* dual = nullptr) {
   const Geometry geometry = settings.geometry;
   const double fx = settings.bodyForce[0], fy = settings.bodyForce[1];
 
@@ -84,8 +88,24 @@ void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, d
   for (int q = 0; q < cq.numPoints; ++q) {
     const double w = measureWeight(cq, q, geometry);
     const StrainRate<Scalar> d = strainRateAt(cq, q, geometry, dofs);
-    const Scalar twoMu = 2.0 * viscosity(regularizedStrainRate(d.ddot(), material), material);
-    const Scalar sxx = twoMu * d.xx, syy = twoMu * d.yy, sxy = twoMu * d.xy, stt = twoMu * d.tt;
+    const Scalar eReg = regularizedStrainRate(d.ddot(), material);
+    const Scalar mu = viscosity(eReg, material);
+    Scalar sxx = 2.0 * mu * d.xx, syy = 2.0 * mu * d.yy, sxy = 2.0 * mu * d.xy, stt = 2.0 * mu * d.tt;
+    if constexpr (!std::is_same_v<Scalar, double>) {
+      if (dual) {
+        // s = 2 μ D in value; derivative 2μ dD + 2 e_r τ dμ with dμ = μ' (g : dD), so τ = D/e_r
+        // gives back the exact tangent (physics/StressDual.hpp).
+        const double D[4] = {d.xx.val(), d.yy.val(), d.xy.val(), d.tt.val()};
+        dual[q].update(D, eReg.val());
+        const double muV = mu.val(), twoE = 2.0 * eReg.val();
+        const Scalar dMu = mu - muV;  // value 0, derivative dμ
+        const double* t = dual[q].tau;
+        sxx = 2.0 * muV * d.xx + twoE * t[0] * dMu;
+        syy = 2.0 * muV * d.yy + twoE * t[1] * dMu;
+        sxy = 2.0 * muV * d.xy + twoE * t[2] * dMu;
+        stt = 2.0 * muV * d.tt + twoE * t[3] * dMu;
+      }
+    }
     const Scalar divU = d.divergence();
 
     Scalar p = 0.0, dpdx = 0.0, dpdy = 0.0;

@@ -45,6 +45,15 @@ class FlowModel {
   void solveTranspose(const MultiVector& in, MultiVector& out) { m_linearSolver->solveTranspose(in, out); }
   /// out = J in.
   void applyJacobian(const Vector& in, Vector& out) const { m_jacobian->apply(in, out); }
+  /// Newton's linearization of the viscoplastic stress and of the slip: the dual methods
+  /// (assembly/NewtonDual.hpp) when true, the exact tangent when false.
+  void useStressDual(bool on) {
+    m_useDual = on;
+    m_dual.clear();
+  }
+  /// Starts a new Newton solve: the next Jacobian is the exact tangent at its point (the
+  /// dual restarts from D/e_r there). The sensitivity solve calls it too, so its K_t is exact.
+  void restartLinearization() { m_dual.clear(); }
   /// Forgets the factorization (the physics changed, so J no longer matches).
   void invalidateJacobian() { m_jacobianValid = false; }
   bool hasJacobian() const { return m_jacobianValid; }
@@ -63,6 +72,8 @@ class FlowModel {
   Teuchos::RCP<Vector> m_jacobianPoint;
   std::unique_ptr<LinearSolver> m_linearSolver;
   bool m_jacobianValid = false;
+  bool m_useDual = false;
+  NewtonDual m_dual;
   int m_numResiduals = 0;
   int m_numJacobians = 0;
 };

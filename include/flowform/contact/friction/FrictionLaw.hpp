@@ -13,6 +13,12 @@
 // scalar (P): values, the AD tangent and ∂/∂ν, ∂/∂m from one code.
 #pragma once
 
+#include <type_traits>
+
+#include <Sacado.hpp>
+
+#include "flowform/contact/friction/FrictionDual.hpp"
+
 namespace flowform {
 
 /// The friction parameters that sensitivity analysis may seed as AD variables.
@@ -43,6 +49,7 @@ struct FrictionNodeData {
   double stressIntegral;        ///< S_k (0 unless the law needs it)
   double tributary;             ///< A_k (0 unless the law needs it)
   double stickingStiffness;     ///< α_t
+  FrictionDualPoint* dual = nullptr;  ///< Jacobian only: the dual slip linearization (FrictionDual.hpp)
 };
 
 template <typename Scalar>
@@ -57,7 +64,18 @@ template <typename Scalar>
 FrictionForce<Scalar> boundedFriction(const FrictionNodeData<Scalar>& d, const Scalar& fHat, FrictionBranch slip) {
   const Scalar& ut = d.tangentialVelocity;
   const Scalar stick = d.stickingStiffness * ut;  // f* = α_t |u_t|, the sticking bound
-  if ((stick >= 0.0 ? stick : Scalar(-stick)) <= fHat) return {stick, FrictionBranch::Stick};
+  const bool sticks = (stick >= 0.0 ? stick : Scalar(-stick)) <= fHat;
+  if constexpr (!std::is_same_v<Scalar, double>) {
+    if (d.dual) {
+      // g = f̂ sign(u_t) in value; derivative ψ_k df̂ + f̂ (1 − ψ_k sign)/|u_t| du_t in slip
+      const double utV = Sacado::ScalarValue<Scalar>::eval(ut), fV = Sacado::ScalarValue<Scalar>::eval(fHat);
+      const double psi = d.dual->update(utV, fV, d.stickingStiffness, sticks);
+      if (sticks) return {stick, FrictionBranch::Stick};
+      const double sign = utV >= 0.0 ? 1.0 : -1.0;
+      return {sign * fV + psi * (fHat - fV) + d.dual->slope * fV * (ut - utV), slip};
+    }
+  }
+  if (sticks) return {stick, FrictionBranch::Stick};
   return {ut >= 0.0 ? fHat : Scalar(-fHat), slip};
 }
 
