@@ -104,8 +104,9 @@ void ContactWall::setScales(std::vector<double> viscosity, std::vector<double> f
 
 StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
                                      double pressureTolerance, double penetrationTolerance,
-                                     int maxChangesPerNode, int* unsettled) const {
+                                     int maxChangesPerNode, int* unsettled, double* runnerUp) const {
   StatusChange atLimit, anywhere;
+  double secondAtLimit = 0.0, secondAnywhere = 0.0;
   if (unsettled) *unsettled = 0;
   for (int k = 0; k < numNodes(); ++k) {
     double violation = 0.0;
@@ -125,8 +126,15 @@ StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::ve
     const int a = previous(k), b = next(k);
     const bool limit = a < 0 || b < 0 || m_active[a] != m_active[k] || m_active[b] != m_active[k];
     StatusChange& best = limit ? atLimit : anywhere;
-    if (violation > best.violation) best = {k, !m_active[k], violation};
+    double& second = limit ? secondAtLimit : secondAnywhere;
+    if (violation > best.violation) {
+      if (best.node >= 0) second = best.violation;
+      best = {k, !m_active[k], violation};
+    } else {
+      second = std::max(second, violation);
+    }
   }
+  if (runnerUp) *runnerUp = atLimit.node >= 0 ? secondAtLimit : secondAnywhere;
   return atLimit.node >= 0 ? atLimit : anywhere;
 }
 

@@ -117,6 +117,12 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
       .sublist("<response name>", false, "one functional")
       .setParameters(*Responses::validParameters());
   ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (docs/theory.md §2)");
+  Teuchos::setStringToIntegralParameter<int>(
+      "Status Update", "Certain Iterate",
+      "Certain Iterate: after a change, Newton iterates one step at a time and the next change is read from the "
+      "first iterate on which it is certain (the same decision for every state within the last step of it; "
+      "docs/contact.md); Converged State: the paper's loop, every change read from a re-solved state",
+      Teuchos::tuple<std::string>("Certain Iterate", "Converged State"), &contact);
   contact.set("Re-solve Tolerance", 0.0,
               "relative residual ||F|| / ||F_0|| at which a re-solve after a status change stops when the next "
               "change is read from it; the state that needs no change is then converged to the Solver tolerances "

@@ -1,5 +1,8 @@
 #include "flowform/drivers/ContactStatusLoop.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "flowform/core/Log.hpp"
 
 namespace flowform {
@@ -10,50 +13,131 @@ ContactStatusLoop::ContactStatusLoop(const Teuchos::ParameterList& contact, cons
       m_pressureTolerance(contact.get<double>("Pressure Tolerance")),
       m_penetrationTolerance(contact.get<double>("Penetration Tolerance")),
       m_resolveTolerance(contact.get<double>("Re-solve Tolerance")),
+      m_certainIterate(contact.get<std::string>("Status Update") == "Certain Iterate"),
       m_mesh(mesh),
       m_dofMap(dofMap) {}
+
+ContactStatusLoop::Decision ContactStatusLoop::decide(const std::vector<ContactWall>& walls, const Vector& x,
+                                                      double pressureShift, double penetrationShift) const {
+  // The largest violation over all walls, at a limit of a contact zone (docs/theory.md §2).
+  Decision d;
+  std::vector<double> p;
+  std::vector<std::array<double, 2>> u;
+  for (size_t w = 0; w < walls.size(); ++w) {
+    wallValues(walls[w], m_dofMap, x, p, u);
+    int stuck = 0;
+    double second = 0.0;
+    const StatusChange c = walls[w].nextChange(p, u, m_pressureTolerance + pressureShift,
+                                               m_penetrationTolerance + penetrationShift, m_maxPerNode, &stuck, &second);
+    d.unsettled += stuck;
+    if (c.node < 0) continue;
+    if (c.violation > d.change.violation) {
+      d.runnerUp = std::max({d.runnerUp, d.change.violation, second});
+      d.change = c;
+      d.wall = static_cast<int>(w);
+    } else {
+      d.runnerUp = std::max(d.runnerUp, c.violation);
+    }
+  }
+  return d;
+}
+
+bool ContactStatusLoop::certain(const std::vector<ContactWall>& walls, const Vector& x, const Decision& d,
+                                double pressureError, double penetrationError) const {
+  // Every state within the error bounds of x gives the decision d: the same change (or none)
+  // with every violation moved by ±error, and a margin to the runner-up that no error can close.
+  auto same = [&](const Decision& e) {
+    return e.wall == d.wall && e.change.node == d.change.node && e.change.activate == d.change.activate;
+  };
+  const Decision more = decide(walls, x, -pressureError, -penetrationError);  // every violation larger
+  const Decision fewer = decide(walls, x, pressureError, penetrationError);   // every violation smaller
+  if (!same(more) || !same(fewer)) return false;
+  if (d.wall < 0) return true;
+  return more.change.violation - more.runnerUp > 2.0 * std::max(pressureError, penetrationError);
+}
 
 int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
                            std::vector<ContactWall>& walls, SolveReport& report) const {
   int changes = 0;
   bool tight = true;  // whether x is a tightly converged solution (the first solve's is)
-  // One re-solve from x, recorded in the report (`loose`: the relative tolerance, 0 tight).
-  auto resolve = [&](double loose) {
-    const SolveReport again = solver.resolve(x, physics, loose);
-    tight = loose <= 0.0;
+  double pressureError = 0.0, penetrationError = 0.0;  // bounds of x's error at the wall nodes
+  double reference = 0.0;  // ||F_0|| of the current re-solve
+  int steps = 0;           // Newton iterations of the current re-solve
+  bool readable = false;   // x is an iterate whose last step bounds its error
+
+  // Newton from x, recorded in the report. `options.continuing`: the same re-solve goes on
+  // (its iterations add to the last entry of newtonPerSolve).
+  auto resolve = [&](NewtonOptions options) {
+    const Vector before(x, Teuchos::Copy);
+    if (options.continuing) options.referenceResidual = reference;
+    const SolveReport again = solver.resolve(x, physics, options);
+    if (!options.continuing) {
+      reference = again.stages.empty() ? 0.0 : again.stages.front().initialResidualNorm;
+      steps = 0;
+      report.newtonPerSolve.push_back(0);
+    }
+    steps += again.newtonIterations;
     report.newtonIterations += again.newtonIterations;
-    report.newtonPerSolve.push_back(again.newtonIterations);
+    report.newtonPerSolve.back() += again.newtonIterations;
     report.restarts += again.restarts;
-    report.converged = again.converged;
     report.residualNorm = again.residualNorm;
-    if (!again.converged) report.message = "after contact change " + std::to_string(changes) + ": " + again.message;
-  };
-  while (report.converged) {
-    // The largest violation over all walls, at a limit of a contact zone (docs/theory.md §2).
-    int wallIndex = -1, unsettled = 0;
-    StatusChange best;
-    std::vector<double> p;
-    std::vector<std::array<double, 2>> u;
-    for (size_t w = 0; w < walls.size(); ++w) {
-      wallValues(walls[w], m_dofMap, x, p, u);
-      int stuck = 0;
-      const StatusChange c =
-          walls[w].nextChange(p, u, m_pressureTolerance, m_penetrationTolerance, m_maxPerNode, &stuck);
-      unsettled += stuck;
-      if (c.node >= 0 && c.violation > best.violation) {
-        best = c;
-        wallIndex = static_cast<int>(w);
+    report.converged = again.converged || again.stoppedAtCap;
+    tight = again.converged && options.looseTolerance <= 0.0;
+    pressureError = penetrationError = 0.0;
+    // An iterate is read only after a full Newton step that cut ||F|| by kContraction or
+    // more (Newton's fast phase); otherwise the step bounds nothing and another one follows.
+    const StageReport* last = again.stages.empty() ? nullptr : &again.stages.back();
+    readable = again.stoppedAtCap && last && last->lastStep == 1.0 &&
+               last->residualNorm <= kContraction * last->initialResidualNorm;
+    if (again.stoppedAtCap) {
+      // The error of the iterate at the wall nodes, bounded by the last Newton step.
+      Vector step(x, Teuchos::Copy);
+      step.update(-1.0, before, 1.0);
+      std::vector<double> dp;
+      std::vector<std::array<double, 2>> du;
+      for (const ContactWall& wall : walls) {
+        wallValues(wall, m_dofMap, step, dp, du);
+        for (size_t k = 0; k < dp.size(); ++k) {
+          pressureError = std::max(pressureError, std::abs(dp[k]));
+          penetrationError = std::max({penetrationError, std::abs(du[k][0]), std::abs(du[k][1])});
+        }
       }
     }
-    if (wallIndex < 0 && !tight) {
-      // No change read from a loosely solved state: converge it tightly and look again.
-      resolve(0.0);
+    if (!report.converged) report.message = "after contact change " + std::to_string(changes) + ": " + again.message;
+  };
+  // Converges the current re-solve to the Solver tolerances.
+  auto converge = [&]() {
+    NewtonOptions options;
+    options.continuing = true;
+    resolve(options);
+    if (report.converged && !tight) {
+      report.converged = false;
+      report.message = "after contact change " + std::to_string(changes) + ": Newton did not converge";
+    }
+  };
+
+  while (report.converged) {
+    const Decision d = decide(walls, x, 0.0, 0.0);
+    if (!tight && m_certainIterate && !(readable && certain(walls, x, d, pressureError, penetrationError))) {
+      // Not yet sure what the converged state would decide: one more Newton iteration.
+      NewtonOptions options;
+      options.continuing = true;
+      options.maxIterations = 1;
+      if (steps >= kMaxStepsPerChange)
+        converge();
+      else
+        resolve(options);
       continue;
     }
-    if (wallIndex < 0) {
-      if (unsettled > 0) {
+    if (d.wall < 0 && !tight) {
+      // No change read from an iterate or a loosely solved state: converge it tightly and look again.
+      converge();
+      continue;
+    }
+    if (d.wall < 0) {
+      if (d.unsettled > 0) {
         report.converged = false;
-        report.message = std::to_string(unsettled) + " contact node(s) cycle between active and free (each changed " +
+        report.message = std::to_string(d.unsettled) + " contact node(s) cycle between active and free (each changed " +
                          std::to_string(m_maxPerNode) + " times) and still violate their criterion";
       }
       break;
@@ -63,16 +147,22 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
       report.message = "the contact status did not settle after " + std::to_string(m_maxChanges) + " changes";
       break;
     }
-    ContactWall& wall = walls[wallIndex];
+    ContactWall& wall = walls[d.wall];
+    const StatusChange& best = d.change;
     const auto& xy = m_mesh.coords[wall.curve().nodes[best.node]];
     log() << "contact: wall '" << wall.name() << "' node " << wall.curve().nodes[best.node] << " at (" << xy[0] << ", "
           << xy[1] << "): " << (best.activate ? "free -> active (penetration " : "active -> free (tension ")
-          << best.violation << ")\n";
+          << best.violation << ")" << (tight ? "" : " [read from an iterate]") << "\n";
     wall.setActive(best.node, best.activate);
     ++changes;
-    // The next change is read from this state: a loose solve suffices while changes follow;
-    // the last state is converged tightly above.
-    resolve(m_resolveTolerance);
+    // The next change is read from the first iterate that decides it for certain, or from a
+    // state solved to the re-solve tolerance; the last state is converged tightly above.
+    NewtonOptions options;
+    if (m_certainIterate)
+      options.maxIterations = 1;
+    else
+      options.looseTolerance = m_resolveTolerance;
+    resolve(options);
   }
   log() << "contact: " << changes << " status change(s)\n";
   return changes;

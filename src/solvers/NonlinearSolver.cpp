@@ -44,7 +44,7 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
     const auto& group = solver.getSolutionGroup();
     m_normF = group.getNormF();
     if (solver.getNumIterations() == 0) {
-      m_normF0 = m_normF;
+      m_normF0 = m_reference > 0.0 ? m_reference : m_normF;
       m_history.assign(1, m_normF);
       m_status = m_normF <= m_atol ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
       return m_status;
@@ -73,6 +73,8 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
        << "), update " << m_normDx << " (utol " << m_utol << ")\n";
     return os;
   }
+  /// The ||F_0|| the relative tolerance scales with, when the solve continues an earlier one.
+  void setReference(double normF0) { m_reference = normF0; }
   double normDx() const { return m_normDx; }
   double initialNorm() const { return m_normF0; }
   /// The line-search step of the last iteration (1 for a full Newton step).
@@ -92,6 +94,7 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
   bool m_atRoundoff = false;
   double m_step = 1.0;
   double m_normF = 0.0, m_normF0 = 0.0, m_normDx = 0.0;
+  double m_reference = 0.0;
   NOX::StatusTest::StatusType m_status = NOX::StatusTest::Unevaluated;
   Teuchos::RCP<NOX::Abstract::Vector> m_scratch;
 };
@@ -162,9 +165,9 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
   Teuchos::ParameterList& cont = valid->sublist("Continuation", false, "continuation in n and e0");
   cont.set("Start Exponent", 1.0, "n at the first stage", positive);
   cont.set("Start Cutoff", 0.1, "e0 at the first stage (if larger than the target's)", positive);
-  cont.set("Initial Step", 0.25,
+  cont.set("Initial Step", 1.0,
            "first step in the continuation parameter λ ∈ (0, 1]; 1 tries the target at once and halves on failure "
-           "(fewer Newton iterations on every scene, but one sticking-limit extrusion then fails: docs/verification.md §6)",
+           "(docs/verification.md §6)",
            Teuchos::rcp(new EnhancedNumberValidator<double>(1e-6, 1.0)));
   cont.set("Minimum Step", 1.0 / 256, "give up when a failed stage halves the step below this",
            Teuchos::rcp(new EnhancedNumberValidator<double>(1e-12, 1.0)));
@@ -196,10 +199,13 @@ double NonlinearSolver::linearSolve(Vector& x, const FlowPhysics& physics) {
   return f.norm2();
 }
 
-StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, double looseTolerance) {
-  m_model.setPhysics(physics);
-  m_model.restartLinearization();
-  if (m_beforeNewton) m_beforeNewton(x);
+StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, const NewtonOptions& options) {
+  const double looseTolerance = options.looseTolerance;
+  if (!options.continuing) {
+    m_model.setPhysics(physics);
+    m_model.restartLinearization();
+    if (m_beforeNewton) m_beforeNewton(x);
+  }
   StageReport report{physics.material.rateExponent, physics.material.cutoff, 0, false, 0.0};
 
   auto group = Teuchos::rcp(new FlowGroup(m_model, x));
@@ -210,7 +216,9 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, doubl
       m_params.get<double>("Absolute Residual Tolerance"),
       loose ? looseTolerance : m_params.get<double>("Relative Residual Tolerance"),
       loose ? std::max(looseTolerance, m_params.get<double>("Update Tolerance")) : m_params.get<double>("Update Tolerance")));
-  auto maxIters = Teuchos::rcp(new NOX::StatusTest::MaxIters(m_params.get<int>("Max Newton Iterations")));
+  const int cap = options.maxIterations > 0 ? options.maxIterations : m_params.get<int>("Max Newton Iterations");
+  residualTest->setReference(options.referenceResidual);
+  auto maxIters = Teuchos::rcp(new NOX::StatusTest::MaxIters(cap));
   auto finite = Teuchos::rcp(new NOX::StatusTest::FiniteValue);
   auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
   tests->addStatusTest(finite);
@@ -246,21 +254,26 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, doubl
   report.newtonIterations = solver->getNumIterations();
   report.residualNorm = solver->getSolutionGroup().getNormF();
   report.initialResidualNorm = residualTest->initialNorm();
+  report.lastStep = residualTest->step();
   report.converged = status == NOX::StatusTest::Converged && std::isfinite(report.residualNorm);
-  if (report.converged) Tpetra::deep_copy(x, *tpetraVector(solver->getSolutionGroup().getX()));
+  report.stoppedAtCap = !report.converged && options.maxIterations > 0 &&
+                        maxIters->checkStatus(*solver, NOX::StatusTest::Minimal) == NOX::StatusTest::Failed &&
+                        std::isfinite(report.residualNorm) && report.residualNorm < report.initialResidualNorm;
+  if (report.converged || report.stoppedAtCap) Tpetra::deep_copy(x, *tpetraVector(solver->getSolutionGroup().getX()));
   return report;
 }
 
-SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, double looseTolerance) {
+SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const NewtonOptions& options) {
   if (isNewtonian(target.material)) return solve(x, target);
   Vector start(x, Teuchos::Copy);
-  StageReport sr = newton(x, target, looseTolerance);
+  StageReport sr = newton(x, target, options);
   SolveReport report;
   report.stages.push_back(sr);
   report.newtonIterations = sr.newtonIterations;
   report.residualNorm = sr.residualNorm;
   report.converged = sr.converged;
-  if (sr.converged) return report;
+  report.stoppedAtCap = sr.stoppedAtCap;
+  if (sr.converged || sr.stoppedAtCap) return report;
   log() << "  re-solve failed; starting again from the Newtonian predictor\n";
   Tpetra::deep_copy(x, start);
   SolveReport full = solve(x, target);

@@ -161,9 +161,11 @@ class ContactWall {
   /// are taken only when no limit node is one. `p`, `u` per wall node. A node that has
   /// already changed `maxChangesPerNode` times is not changed again (it would cycle);
   /// `unsettled` returns how many such nodes still violate their criterion.
+  /// `runnerUp` (optional) returns the second largest violation of the class the change was
+  /// taken from (0 when there is none).
   StatusChange nextChange(const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
                           double pressureTolerance, double penetrationTolerance, int maxChangesPerNode,
-                          int* unsettled = nullptr) const;
+                          int* unsettled = nullptr, double* runnerUp = nullptr) const;
 
  private:
   /// P_k, S_k and A_k of node k, each only when the law needs it (FrictionLaw.hpp).

@@ -31,9 +31,28 @@ class ContactStatusLoop {
           SolveReport& report) const;
 
  private:
+  /// One decision of the loop: the change (wall −1: none), the runner-up's violation in the
+  /// class the change came from, and the nodes that may not change again but violate.
+  struct Decision {
+    int wall = -1;
+    StatusChange change;
+    double runnerUp = 0.0;
+    int unsettled = 0;
+  };
+  /// The decision at x with both tolerances moved by the shifts (> 0: fewer candidates).
+  Decision decide(const std::vector<ContactWall>& walls, const Vector& x, double pressureShift,
+                  double penetrationShift) const;
+  /// Whether every state within the error bounds of x (pressure, velocity at the wall nodes)
+  /// gives the decision d.
+  bool certain(const std::vector<ContactWall>& walls, const Vector& x, const Decision& d, double pressureError,
+               double penetrationError) const;
+
+  static constexpr int kMaxStepsPerChange = 8;  ///< then the re-solve is converged in one go
+  static constexpr double kContraction = 0.1;  ///< ||F|| reduction of a step that makes an iterate readable
   int m_maxChanges, m_maxPerNode;
   double m_pressureTolerance, m_penetrationTolerance;
   double m_resolveTolerance;  ///< relative residual of the intermediate re-solves (0: tight)
+  bool m_certainIterate;      ///< Status Update = Certain Iterate
   const Mesh& m_mesh;
   const DofMap& m_dofMap;
 };

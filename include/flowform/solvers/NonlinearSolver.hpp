@@ -31,6 +31,23 @@ struct StageReport {
   bool converged;
   double residualNorm;
   double initialResidualNorm = 0.0;  ///< ||F|| at the stage's start (its relative tolerance's scale)
+  bool stoppedAtCap = false;         ///< NewtonOptions::maxIterations reached with a finite F (x is that iterate)
+  double lastStep = 1.0;             ///< the line-search step of the last iteration (1: a full Newton step)
+};
+
+/// How one Newton solve runs (the defaults: a solve of its own, to the Solver tolerances).
+struct NewtonOptions {
+  /// > 0: stop once ||F|| ≤ looseTolerance ||F_0|| (an intermediate state the contact
+  /// loop only reads its next change from).
+  double looseTolerance = 0.0;
+  /// > 0: at most this many iterations; reaching it with a finite F is not a failure, the
+  /// iterate is returned (StageReport::stoppedAtCap).
+  int maxIterations = 0;
+  /// true: the iterations continue the previous solve at the same physics and statuses, so
+  /// the penalty scales (before-Newton hook) and the Newton duals are kept.
+  bool continuing = false;
+  /// > 0: the ||F_0|| of the solve this one continues (the relative tolerance's scale).
+  double referenceResidual = 0.0;
 };
 
 struct SolveReport {
@@ -45,6 +62,7 @@ struct SolveReport {
   /// after a contact status change (ContactStatusLoop).
   std::vector<int> newtonPerSolve;
   int restarts = 0;  ///< re-solves that failed and started again from the predictor
+  bool stoppedAtCap = false;  ///< a resolve() that stopped at NewtonOptions::maxIterations
   /// converged, linear_problem, newton_iterations, continuation_stages, residual_norm,
   /// stages, message and "solves" (newton_iterations per solve, restarts) into the summary.
   void report(nlohmann::json& summary) const;
@@ -64,10 +82,9 @@ class NonlinearSolver {
   SolveReport solve(Vector& x, const FlowPhysics& target);
 
   /// Solves again after a small change (a contact status change): Newton at the target
-  /// from x; if that fails, the full solve() (predictor and continuation). With
-  /// `looseTolerance` > 0 Newton stops once ||F|| ≤ looseTolerance ||F_0|| (an intermediate
-  /// state the contact loop only reads its next change from).
-  SolveReport resolve(Vector& x, const FlowPhysics& target, double looseTolerance = 0.0);
+  /// from x; if that fails, the full solve() (predictor and continuation). `options`: a
+  /// loose tolerance, an iteration cap (the iterate is kept), continuing the previous solve.
+  SolveReport resolve(Vector& x, const FlowPhysics& target, const NewtonOptions& options = {});
 
   /// Called with the current x before every Newton solve (each continuation stage, each
   /// re-solve): the contact walls take their penalty scales from it.
@@ -75,7 +92,7 @@ class NonlinearSolver {
 
  private:
   /// One Newton solve at the model's current physics; returns iterations, sets converged.
-  StageReport newton(Vector& x, const FlowPhysics& physics, double looseTolerance = 0.0);
+  StageReport newton(Vector& x, const FlowPhysics& physics, const NewtonOptions& options = {});
   /// x += −J⁻¹ F(x): exact for a linear problem.
   double linearSolve(Vector& x, const FlowPhysics& physics);
 
