@@ -19,6 +19,7 @@ numbers to OUTDIR/<subcommand>.json and exits 1 when a check failed. Each run's 
                       meshes the observed order and the Richardson extrapolation
   penalty-normal      ram force vs Normal Penalty Factor over three decades
   penalty-tangential  ram force vs Tangential Penalty Factor over three decades
+  sticking-penalty    F and dF/dν converge as κ_t grows to 1e8 (first order in 1/κ_t)
   frictionless        ν = 0 Coulomb ≡ Friction Law None; vs Symmetry walls (with and without
                       releasing nodes in tension)
   sticking            large ν vs no-slip (Velocity 0) container and die face

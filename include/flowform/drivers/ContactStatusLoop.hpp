@@ -48,7 +48,7 @@ class ContactStatusLoop {
                double penetrationError) const;
 
   static constexpr int kMaxStepsPerChange = 8;  ///< then the re-solve is converged in one go
-  static constexpr double kContraction = 0.1;  ///< ||F|| reduction of a step that makes an iterate readable
+  static constexpr double kContraction = 0.5;  ///< ||F|| reduction of a step that makes an iterate readable
   int m_maxChanges, m_maxPerNode;
   double m_pressureTolerance, m_penetrationTolerance;
   double m_resolveTolerance;  ///< relative residual of the intermediate re-solves (0: tight)

@@ -58,4 +58,49 @@ def cmd_penalty_tangential(runner, args, checks):
                  "the ram force does not decrease as the sticking penalty stiffens")
 
 
-COMMANDS = {"penalty-normal": cmd_penalty_normal, "penalty-tangential": cmd_penalty_tangential}
+def cmd_sticking_penalty(runner, args, checks):
+    """F and dF/dν converge as the sticking penalty κ_t grows (ν = 0.2; docs/contact.md).
+
+    The stick branch is the penalty g = α_t u_t: it lets a sticking node slide by
+    u_t = g/α_t, so F(κ_t) and dF/dν(κ_t) approach their exact-sticking limits at first order
+    in 1/κ_t. Checks: every run converges (up to κ_t = 1e8); the differences from the stiffest
+    run shrink by at least 5 per decade of κ_t (10 for a first-order error) while they are
+    above 1e-8 relative (below that, the solver tolerance and the penalty's round-off
+    dominate); at κ_t >= 1e4 both are within 1e-6 of the stiffest run.
+    """
+    h = mesh_list(args.meshes, "0.1")[0]
+    values = [float(v) for v in args.values.split(",")] if args.values else [1.0, 10.0, 1e2, 1e3, 1e4, 1e6, 1e8]
+    nu = float(args.nu) if args.nu else 0.2
+    specs = []
+    for v in values:
+        sets = [f"Boundary Conditions/{w}/Tangential Penalty Factor={lit(v)}" for w in runner.walls]
+        sets.append("Sensitivity/Parameters={Friction Coefficient}")
+        specs.append((f"h = {h}, nu = {nu}, kappa_t = {v:g}", dict(name=f"sticking_{v:g}", h=h, nu=nu, sets=sets)))
+    runs = runner.run_all(specs, checks)
+    if not all(checks.check(r.converged, f"{r.label}: converged") for r in runs):
+        return
+    F = [r.force for r in runs]
+    dF = [r.summary["sensitivities"][runner.force_name]["Friction Coefficient"] for r in runs]
+    rows = []
+    for v, f, d, r in zip(values, F, dF, runs):
+        rows.append({"kappa_t": v, "ram_force": f, "dF_dnu": d, "newton": r.summary["newton_iterations"],
+                     "contact_changes": r.summary["contact_changes"]})
+        print(f"    kappa_t = {v:8g}: F = {f:.10f}  dF/dnu = {d:.10f}  Newton {r.summary['newton_iterations']}")
+    checks.record("table", rows)
+    for name, series in (("F", F), ("dF/dnu", dF)):
+        limit = series[-1]
+        diffs = [abs(x - limit) / abs(limit) for x in series[:-1]]
+        for i in range(len(diffs) - 1):
+            if diffs[i + 1] < 1e-8 or values[i] < 10.0:
+                continue
+            decades = np.log10(values[i + 1] / values[i])
+            rate = (diffs[i] / diffs[i + 1]) ** (1.0 / decades)
+            checks.check(rate >= 5.0, f"{name}: the gap to kappa_t = {values[-1]:g} shrinks {rate:.1f}x per decade "
+                                      f"from kappa_t = {values[i]:g} to {values[i + 1]:g} (>= 5; 10 at first order)")
+        for v, d in zip(values[:-1], diffs):
+            if v >= 1e4:
+                checks.check(d < 1e-6, f"{name}: kappa_t = {v:g} within {d:.1e} < 1e-6 of kappa_t = {values[-1]:g}")
+
+
+COMMANDS = {"penalty-normal": cmd_penalty_normal, "penalty-tangential": cmd_penalty_tangential,
+            "sticking-penalty": cmd_sticking_penalty}
