@@ -84,8 +84,9 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
     report.converged = again.converged || again.stoppedAtCap;
     tight = again.converged && options.looseTolerance <= 0.0;
     pressureError = penetrationError = 0.0;
-    // An iterate is read only after a full Newton step that cut ||F|| by kContraction or
-    // more (Newton's fast phase); otherwise the step bounds nothing and another one follows.
+    // An iterate is read only after a full Newton step that multiplied ||F|| by at most
+    // kContraction = 1/2: Newton contracts, and the remaining error (a geometric series of
+    // ratio <= 1/2) is below the step. Otherwise the step bounds nothing; another one follows.
     const StageReport* last = again.stages.empty() ? nullptr : &again.stages.back();
     readable = again.stoppedAtCap && last && last->lastStep == 1.0 &&
                last->residualNorm <= kContraction * last->initialResidualNorm;
