@@ -89,7 +89,7 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
     // ratio <= 1/2) is below the step. Otherwise the step bounds nothing; another one follows.
     const StageReport* last = again.stages.empty() ? nullptr : &again.stages.back();
     readable = again.stoppedAtCap && last && last->lastStep == 1.0 &&
-               last->residualNorm <= kContraction * last->initialResidualNorm;
+               last->newtonIterations == 1 && last->residualNorm <= kContraction * last->startResidualNorm;
     if (again.stoppedAtCap) {
       // The error of the iterate at the wall nodes, bounded by the last Newton step.
       Vector step(x, Teuchos::Copy);

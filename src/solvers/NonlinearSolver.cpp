@@ -44,6 +44,7 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
     const auto& group = solver.getSolutionGroup();
     m_normF = group.getNormF();
     if (solver.getNumIterations() == 0) {
+      m_normStart = m_normF;
       m_normF0 = m_reference > 0.0 ? m_reference : m_normF;
       m_history.assign(1, m_normF);
       m_status = m_normF <= m_atol ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
@@ -76,6 +77,8 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
   /// The ||F_0|| the relative tolerance scales with, when the solve continues an earlier one.
   void setReference(double normF0) { m_reference = normF0; }
   double normDx() const { return m_normDx; }
+  /// ||F|| where this solve started (the same as initialNorm() unless it continues another).
+  double startNorm() const { return m_normStart; }
   double initialNorm() const { return m_normF0; }
   /// The line-search step of the last iteration (1 for a full Newton step).
   double step() const { return m_step; }
@@ -94,7 +97,7 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
   bool m_atRoundoff = false;
   double m_step = 1.0;
   double m_normF = 0.0, m_normF0 = 0.0, m_normDx = 0.0;
-  double m_reference = 0.0;
+  double m_reference = 0.0, m_normStart = 0.0;
   NOX::StatusTest::StatusType m_status = NOX::StatusTest::Unevaluated;
   Teuchos::RCP<NOX::Abstract::Vector> m_scratch;
 };
@@ -255,6 +258,7 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, const
   report.residualNorm = solver->getSolutionGroup().getNormF();
   report.initialResidualNorm = residualTest->initialNorm();
   report.lastStep = residualTest->step();
+  report.startResidualNorm = residualTest->startNorm();
   report.converged = status == NOX::StatusTest::Converged && std::isfinite(report.residualNorm);
   report.stoppedAtCap = !report.converged && options.maxIterations > 0 &&
                         maxIters->checkStatus(*solver, NOX::StatusTest::Minimal) == NOX::StatusTest::Failed &&

@@ -33,6 +33,7 @@ struct StageReport {
   double initialResidualNorm = 0.0;  ///< ||F|| at the stage's start (its relative tolerance's scale)
   bool stoppedAtCap = false;         ///< NewtonOptions::maxIterations reached with a finite F (x is that iterate)
   double lastStep = 1.0;             ///< the line-search step of the last iteration (1: a full Newton step)
+  double startResidualNorm = 0.0;    ///< ||F|| where this solve started (initialResidualNorm may be a reference)
 };
 
 /// How one Newton solve runs (the defaults: a solve of its own, to the Solver tolerances).
