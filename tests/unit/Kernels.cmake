@@ -14,3 +14,6 @@ set_tests_properties(AssemblyTest AssemblyTest_np2 AssemblyParallelTest Assembly
 # Moving the mesh nodes: refreshed geometry gives the residual of a fresh mesh (1 and 2 ranks).
 flowform_unit_test(MovingMeshTest unit/MovingMeshTest.cpp)
 flowform_unit_test(MovingMeshTest unit/MovingMeshTest.cpp NP 2)
+# The dual linearizations of Newton (stress and slip): values unchanged, fresh = exact tangent,
+# O(step) departure, bounds kept (docs/theory.md §9).
+flowform_unit_test(NewtonDualTest unit/NewtonDualTest.cpp)
