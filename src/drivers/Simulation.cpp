@@ -93,7 +93,23 @@ const SolveReport& Simulation::run() {
         << " dofs, " << m_comm->getSize() << " rank(s)\n";
   NonlinearSolver solver = newtonSolver(true);
   if (!m_walls.empty()) updateWallScales(*m_solution);
+  const Vector initial(*m_solution, Teuchos::Copy);
   m_report = solver.solve(*m_solution, m_physics);
+  if (!m_report.converged && !m_walls.empty()) {
+    // The zero start puts every wall node at the kink of its friction law; the predictor then
+    // sees frictionless walls. Where friction dominates (ν ≳ 1) that start can fail: once more,
+    // with the walls sticking at rest (FrictionSettings::stickAtRest; docs/contact.md).
+    log() << "flowform: the first solve failed from frictionless walls (" << m_report.message
+          << "); solving again from walls that stick at rest\n";
+    Tpetra::deep_copy(*m_solution, initial);
+    for (ContactWall& wall : m_walls) wall.setStickAtRest(true);
+    updateWallScales(*m_solution);
+    SolveReport again = solver.solve(*m_solution, m_physics);
+    for (ContactWall& wall : m_walls) wall.setStickAtRest(false);
+    again.newtonIterations += m_report.newtonIterations;
+    again.restarts = m_report.restarts + 1;
+    m_report = again;
+  }
   m_report.newtonPerSolve = {m_report.newtonIterations};
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);

@@ -2,7 +2,7 @@
 """Stress battery of the nonlinear solve: cases at the edges of the parameter ranges a user
 may set, each of which must converge (exit 0, converged: true) and give finite responses.
 Each case is one line of CASES: a name, the case file and its --set overrides. A group
-(`channel`, `extrusion`, `extrusion-slow`) is one ctest test (tests/regression/Stress.cmake).
+(`channel`, `extrusion`, `grid` — the last under the slow label) is one ctest test (tests/regression/Stress.cmake).
 
     stress_checks.py GROUP FLOWFORM SOURCE_DIR OUT_DIR
 
@@ -53,23 +53,30 @@ def groups(source):
         ],
         "extrusion": [
             extrusion("sigma0_0", source, "Material/Yield Stress=0.0"),
-            extrusion("kappa_t_1e2", source, walls_set=("Tangential Penalty Factor", "100.0")),
             extrusion("n_100", source, "Material/Rate Exponent=100.0"),
             extrusion("e0_1e-5", source, "Material/Strain Rate Cutoff=1e-5"),
-        ],
-        # The issue-#10 targets not met yet (exit 3 on 2026-11-22: Newton cycles on the
-        # friction kinks at n ≈ 1; γ = 10⁶ with an absolute e0): slow, so outside CI.
-        "extrusion-slow": [
-            extrusion("nu_2", source, walls_set=("Friction Coefficient", "2.0")),
-            ("default_mesh_kappa_t_100_nu_0.2", EX,
-             ["Mesh/Geo Parameters/hc=0.005"] + walls(os.path.join(source, EX), "Tangential Penalty Factor", "100.0")
-             + walls(os.path.join(source, EX), "Friction Coefficient", "0.2")),
-            extrusion("nu_5", source, walls_set=("Friction Coefficient", "5.0")),
+            extrusion("kappa_t_1e2", source, walls_set=("Tangential Penalty Factor", "100.0")),
             extrusion("kappa_t_1e4", source, walls_set=("Tangential Penalty Factor", "1e4")),
             extrusion("kappa_t_1e6", source, walls_set=("Tangential Penalty Factor", "1e6")),
             extrusion("kappa_t_1e8", source, walls_set=("Tangential Penalty Factor", "1e8")),
+            # friction far above the material's shear strength: the first solve fails from
+            # frictionless walls and converges from walls that stick at rest (docs/contact.md)
+            extrusion("nu_2", source, walls_set=("Friction Coefficient", "2.0")),
+            extrusion("nu_5", source, walls_set=("Friction Coefficient", "5.0")),
+            ("default_mesh_kappa_t_100_nu_0.2", EX,
+             ["Mesh/Geo Parameters/hc=0.005"] + walls(os.path.join(source, EX), "Tangential Penalty Factor", "100.0")
+             + walls(os.path.join(source, EX), "Friction Coefficient", "0.2")),
             channel("gamma_1e6", "Material/Rate Constant=1e6"),
         ],
+        # The grids of issue #10 (slow label): the channel over γ × e0 × n, the extrusion over
+        # ν × κ_t, plane and axisymmetric.
+        "grid": [channel(f"channel_gamma_{g}_e0_{e}_n_{n}", f"Material/Rate Constant={g}",
+                         f"Material/Strain Rate Cutoff={e}", f"Material/Rate Exponent={n}")
+                 for g in ("1e-3", "1.0", "1e3", "1e6") for e in ("1e-6", "1e-4", "1e-2") for n in ("1.0", "5.0", "100.0")]
+                + [(f"{tag}_nu_{nu}_kappa_t_{k}", case, COARSE + walls(os.path.join(source, case), "Friction Coefficient", nu)
+                    + walls(os.path.join(source, case), "Tangential Penalty Factor", k))
+                   for tag, case in (("plane", EX), ("axisym", "xml/extrusion_axisym.xml"))
+                   for nu in ("0.0", "0.5", "1.0", "2.0", "5.0") for k in ("10.0", "1e4", "1e8")],
     }
 
 

@@ -119,6 +119,8 @@ class ContactWall {
   void setScales(std::vector<double> viscosity, std::vector<double> flowStress);
   void setFrictionCoefficient(double nu) { m_settings.frictionCoefficient = nu; }
   void setShearFactor(double m) { m_settings.shearFactor = m; }
+  /// Nodes at rest without compression stick (FrictionSettings::stickAtRest).
+  void setStickAtRest(bool on) { m_settings.friction.stickAtRest = on; }
   /// ν and m as the case gives them.
   FrictionParameters<double> frictionParameters() const {
     return {m_settings.frictionCoefficient, m_settings.shearFactor};

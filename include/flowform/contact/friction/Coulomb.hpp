@@ -16,8 +16,8 @@ struct CoulombFriction {
 
   template <typename Scalar, typename PScalar>
   static FrictionForce<Scalar> force(const FrictionNodeData<Scalar>& d, const FrictionParameters<PScalar>& fp,
-                                     const FrictionSettings&) {
-    if (!(d.pressureIntegral > 0.0)) return {Scalar(0.0), FrictionBranch::NoFriction};
+                                     const FrictionSettings& settings) {
+    if (uncompressed(d, settings)) return {Scalar(0.0), FrictionBranch::NoFriction};
     return boundedFriction(d, Scalar(fp.frictionCoefficient * d.pressureIntegral), FrictionBranch::Slip);
   }
 };

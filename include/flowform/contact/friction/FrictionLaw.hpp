@@ -39,6 +39,9 @@ struct FrictionSettings {
   double nortonCoefficient = 0.0;  ///< α_f K
   double nortonExponent = 1.0;     ///< q
   double nortonRegularization = 1e-6;
+  /// A node at rest without compression sticks (uncompressed()): set for the second start of
+  /// a first solve that failed from frictionless walls (Simulation::run).
+  bool stickAtRest = false;
 };
 
 /// What the wall gives a law at one active node.
@@ -57,6 +60,17 @@ struct FrictionForce {
   Scalar g;
   FrictionBranch branch;
 };
+
+/// Whether a Coulomb-type law carries no friction at the node: no compression (P_k = 0, as
+/// P_k sums p⁺). A node at rest (u_t = 0 exactly, as every wall node is in the zero start of
+/// the Newtonian predictor) is at the kink of every branch. By default it carries none, so the
+/// first linearization sees frictionless walls; with `stickAtRest` it takes the sticking
+/// branch (g = α_t u_t = 0 with the derivative α_t), so it sees sticking walls — the start
+/// that lets the sticking-dominated cases (ν = 2, 5) converge (docs/contact.md).
+template <typename Scalar>
+bool uncompressed(const FrictionNodeData<Scalar>& d, const FrictionSettings& s) {
+  return !(d.pressureIntegral > 0.0) && !(s.stickAtRest && d.tangentialVelocity == 0.0);
+}
 
 /// The sticking rule of the bounded laws: stick while α_t |u_t| ≤ f̂, else slip at f̂
 /// against u_t. In stick g = α_t u_t does not depend on ν or m (∂g/∂ν = ∂g/∂m = 0).

@@ -18,8 +18,8 @@ struct OrowanFriction {
 
   template <typename Scalar, typename PScalar>
   static FrictionForce<Scalar> force(const FrictionNodeData<Scalar>& d, const FrictionParameters<PScalar>& fp,
-                                     const FrictionSettings&) {
-    if (!(d.pressureIntegral > 0.0)) return {Scalar(0.0), FrictionBranch::NoFriction};
+                                     const FrictionSettings& settings) {
+    if (uncompressed(d, settings)) return {Scalar(0.0), FrictionBranch::NoFriction};
     const Scalar fCoulomb = fp.frictionCoefficient * d.pressureIntegral;
     const Scalar fTresca = fp.shearFactor * (d.stressIntegral / std::sqrt(3.0));
     const bool trescaLimited = !(fCoulomb < fTresca);
