@@ -278,6 +278,22 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
   report.converged = sr.converged;
   report.stoppedAtCap = sr.stoppedAtCap;
   if (sr.converged || sr.stoppedAtCap) return report;
+  if (options.maxIterations > 0) {
+    // A capped step that did not reduce ||F|| (the line search failed): Newton without the
+    // cap from the same start, before the costly restart from the predictor.
+    Tpetra::deep_copy(x, start);
+    NewtonOptions uncapped = options;
+    uncapped.maxIterations = 0;
+    uncapped.continuing = true;
+    if (uncapped.referenceResidual <= 0.0) uncapped.referenceResidual = sr.initialResidualNorm;
+    const StageReport again = newton(x, target, uncapped);
+    report.stages.push_back(again);
+    report.newtonIterations += again.newtonIterations;
+    report.residualNorm = again.residualNorm;
+    report.converged = again.converged;
+    report.stoppedAtCap = false;
+    if (again.converged) return report;
+  }
   log() << "  re-solve failed; starting again from the Newtonian predictor\n";
   Tpetra::deep_copy(x, start);
   SolveReport full = solve(x, target);
