@@ -204,6 +204,18 @@ void Assembler::jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fO
   }
 }
 
+void Assembler::unconstrainedJacobian(const Vector& xOwned, FECrsMatrix& jacobian) const {
+  const Vector& xOverlap = importSolution(xOwned);
+  Tpetra::beginAssembly(jacobian);
+  jacobian.setAllToScalar(0.0);
+  {
+    Workset ws = workset(xOverlap, nullptr, nullptr, &jacobian);
+    assembleCells<JacobianEval>(ws, nullptr, false);
+    if (m_walls) assembleContact<JacobianEval>(ws, nullptr, false);
+  }
+  Tpetra::endAssembly(jacobian);
+}
+
 void Assembler::tangent(const Vector& xOwned, const Vector* dxOwned, const SensitivityParameter* h, Vector& dfOwned,
                         bool applyConstraints) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: assembly (tangent)"));

@@ -127,7 +127,42 @@ void cellIntegrals(const Workset& x, const Mesh& mesh, const DofMap& dofMap, con
   }
 }
 
+/// The length of the curve, or the area 2π r ds it sweeps when axisymmetric (the same on
+/// every rank: the curve is replicated).
+double curveArea(const Mesh& mesh, const BoundaryCurve& curve, Geometry geometry) {
+  double area = 0.0;
+  for (size_t s = 0; s < curve.segmentLength.size(); ++s) {
+    const auto& a = mesh.coords[curve.nodes[s]];
+    const auto& b = mesh.coords[curve.nodes[(s + 1) % curve.nodes.size()]];
+    area += curve.segmentLength[s] * (geometry == Geometry::Axisymmetric ? M_PI * (a[0] + b[0]) : 1.0);
+  }
+  return area;
+}
+
 }  // namespace
+
+bool Responses::reactionWeights(const std::string& name, const Mesh& mesh, const DofMap& dofMap, Geometry geometry,
+                                Vector& c) const {
+  for (const Response& r : m_responses) {
+    if (r.name != name || (r.type != "Boundary Force" && r.type != "Mean Pressure")) continue;
+    c.putScalar(0.0);
+    const BoundaryCurve curve = buildBoundaryCurve(mesh, mesh.boundary(r.boundary));
+    const double area = r.type == "Mean Pressure" ? curveArea(mesh, curve, geometry) : 1.0;
+    auto view = c.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (size_t k = 0; k < curve.nodes.size(); ++k) {
+      const LO n = dofMap.overlapIndex(curve.nodes[k]);
+      if (n < 0 || n >= dofMap.numOwnedNodes()) continue;  // owned dofs are the overlap's first ones
+      if (r.type == "Boundary Force") {
+        view(dofMap.dof(n, r.component == "X" ? kUx : kUy), 0) = 1.0;
+      } else {
+        view(dofMap.dof(n, kUx), 0) = -curve.normals[k][0] / area;
+        view(dofMap.dof(n, kUy), 0) = -curve.normals[k][1] / area;
+      }
+    }
+    return true;
+  }
+  return false;
+}
 
 template <typename Scalar>
 std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const Vector* dxOwned,
@@ -165,15 +200,7 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
         if (r.type == "Boundary Power") local += Rx * at(x, dofMap.dof(n, kUx)) + Ry * at(x, dofMap.dof(n, kUy));
       }
       Scalar value = sumOverRanks(comm, local);
-      if (r.type == "Mean Pressure") {
-        double area = 0.0;  // the same on every rank: the curve is replicated
-        for (size_t s = 0; s < curve.segmentLength.size(); ++s) {
-          const auto& a = mesh.coords[curve.nodes[s]];
-          const auto& b = mesh.coords[curve.nodes[(s + 1) % curve.nodes.size()]];
-          area += curve.segmentLength[s] * (geometry == Geometry::Axisymmetric ? M_PI * (a[0] + b[0]) : 1.0);
-        }
-        value /= area;
-      }
+      if (r.type == "Mean Pressure") value /= curveArea(mesh, curve, geometry);
       values[r.name] = value;
     } else if (r.type == "Plastic Power" || r.type == "Stabilization Power" || r.type == "Dead Zone") {
       if (tangent && r.type == "Dead Zone") continue;  // piecewise constant in x: no derivative

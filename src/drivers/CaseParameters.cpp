@@ -116,6 +116,13 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   valid->sublist("Responses", false, "functionals by name (include/flowform/assembly/Responses.hpp)")
       .sublist("<response name>", false, "one functional")
       .setParameters(*Responses::validParameters());
+  Teuchos::setStringToIntegralParameter<int>(
+      "Method", "None",
+      "None; Dual Weighted Residual: EXPERIMENTAL, not validated (docs/theory.md §7: its effectivity on the "
+      "extrusion is not yet usable), estimates of the Boundary Force and Mean Pressure responses into "
+      "summary.json functionals_error_estimate",
+      Teuchos::tuple<std::string>("None", "Dual Weighted Residual"),
+      &valid->sublist("Error Estimation", false, "a posteriori error estimates of the responses (issue #11, in progress)"));
   ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (docs/theory.md §2)");
   Teuchos::setStringToIntegralParameter<int>(
       "Status Update", "Certain Iterate",
@@ -152,7 +159,7 @@ void validateCase(ParameterList& params) {
   } catch (const std::exception& e) {
     throw InputError("in the case parameter list: " + cleanTeuchosMessage(e.what()));
   }
-  for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output", "Contact"})
+  for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output", "Contact", "Error Estimation"})
     validateSublist(params.sublist(name), valid.sublist(name), name);
   if (!params.isSublist("Mesh") || !params.sublist("Mesh").isParameter("File"))
     throw InputError("the case has no Mesh/File: name a .msh or .geo file");

@@ -1,5 +1,7 @@
 #include "flowform/drivers/Simulation.hpp"
 
+#include "flowform/estimation/DualWeightedResidual.hpp"
+
 #include <chrono>
 #include <filesystem>
 
@@ -115,6 +117,13 @@ const SolveReport& Simulation::run() {
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged)
     m_functionals = m_responses->evaluate(*m_solution, m_mesh, *m_dofMap, *m_assembler, m_walls);
+  if (m_report.converged && !m_functionals.empty() &&
+      m_params.sublist("Error Estimation").get<std::string>("Method") == "Dual Weighted Residual") {
+    m_errorEstimates = dualWeightedResidual(*m_model, *m_solution, *m_responses, m_mesh, m_walls);
+    for (const auto& [name, eta] : m_errorEstimates)
+      log() << "flowform: " << name << " = " << m_functionals[name] << ", estimated error " << eta << " ("
+            << 100.0 * std::abs(eta) / std::max(std::abs(m_functionals[name]), 1e-300) << " %)\n";
+  }
   m_solveSeconds = secondsSince(start);
   if (m_report.converged)
     log() << "flowform: converged (" << m_report.newtonIterations << " Newton iterations, "
@@ -251,6 +260,10 @@ void Simulation::writeOutput(const std::string& outDir) const {
                         {"output", secondsSince(start)}};
   summary["functionals"] = nlohmann::json::object();
   for (const auto& [name, value] : m_functionals) summary["functionals"][name] = value;
+  if (!m_errorEstimates.empty()) {
+    summary["functionals_error_estimate"] = nlohmann::json::object();
+    for (const auto& [name, eta] : m_errorEstimates) summary["functionals_error_estimate"][name] = eta;
+  }
   summary["fd_check"] = nlohmann::json::object();
   m_sensitivity->report(summary);  // "sensitivities", "sensitivity" (what it cost)
   summary["sensitivity"]["finite_difference"] = {{"runs", 0}};

@@ -52,6 +52,9 @@ class Assembler {
   /// and the duals are moved to x first (assembly/NewtonDual.hpp); without, J is exact.
   void jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fOwned = nullptr,
                 NewtonDual* dual = nullptr) const;
+  /// The exact Jacobian of the unconstrained residual (the reactions' derivative).
+  void unconstrainedJacobian(const Vector& xOwned, FECrsMatrix& jacobian) const;
+  const BoundaryConditions& boundaryConditions() const { return m_bcs; }
 
   /// The directional derivative d/dε F(x + ε dx; h + ε) at ε = 0, into `dfOwned`: J dx +
   /// ∂F/∂h. `dxOwned` null: no motion of x; `h` null: no parameter. With `applyConstraints`

@@ -51,6 +51,12 @@ class Responses {
                                             const Mesh& mesh, const DofMap& dofMap, const Assembler& assembler,
                                             const std::vector<ContactWall>& walls) const;
 
+  /// For a response linear in the reactions, φ = c·R_unc(x) (Boundary Force: c = e_X or e_Y
+  /// on the group's nodes; Mean Pressure: c = −n/A), c on the owned map; false (c untouched)
+  /// for the other types. The adjoint of the error estimates starts from it.
+  bool reactionWeights(const std::string& name, const Mesh& mesh, const DofMap& dofMap, Geometry geometry,
+                       Vector& c) const;
+
   /// Response names, in the case's order.
   std::vector<std::string> names() const {
     std::vector<std::string> n;

@@ -93,6 +93,7 @@ class Simulation {
   std::unique_ptr<Sensitivity> m_sensitivity;
   std::unique_ptr<FiniteDifferenceCheck> m_fdCheck;
   std::map<std::string, double> m_functionals;
+  std::map<std::string, double> m_errorEstimates;  ///< φ(u) − φ(u_h) estimated (estimation/DualWeightedResidual)
   int m_contactChanges = 0;
   std::unique_ptr<DofMap> m_dofMap;
   std::unique_ptr<BoundaryConditions> m_bcs;
