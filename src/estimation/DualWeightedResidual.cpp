@@ -158,7 +158,7 @@ double weightedResidual(const Assembler& assembler, const Vector& xOverlap, cons
   auto x = xOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto gx = gxOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto gy = gyOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-  (void)zOverlap;
+  auto z = zOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   const double fx = physics.kernel.bodyForce[0], fy = physics.kernel.bodyForce[1];
   double eta = 0.0;
   CellGeometry g;
@@ -174,6 +174,19 @@ double weightedResidual(const Assembler& assembler, const Vector& xOverlap, cons
     for (int i = 0; i < N; ++i) values[i] = x(dofs[i], 0);
     const double muK = centroidViscosity(g.centroid, geometry, physics.material, values);
     const double tau = stabilizationTau(physics.kernel.beta, g.diameter, muK);
+    // The stabilization's consistency error, S(u_h)(z_h) = −τ ∫ ∇z_p·(∇p − f): the discrete
+    // residual R_h = R + S vanishes against z_h, so −R(u_h)(z) = −R(u_h)(z⁺ − z_h) + S(u_h)(z_h).
+    for (int q = 0; q < g.rule.numPoints; ++q) {
+      double px = 0.0, py = 0.0, zx = 0.0, zy = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        const double pc = values[EqualOrderLayout::index(c, kP)], zc = z(dofs[EqualOrderLayout::index(c, kP)], 0);
+        px += g.rule.dNdx[q][c] * pc;
+        py += g.rule.dNdy[q][c] * pc;
+        zx += g.rule.dNdx[q][c] * zc;
+        zy += g.rule.dNdy[q][c] * zc;
+      }
+      eta -= measureWeight(g.rule, q, geometry) * tau * (zx * (px - fx) + zy * (py - fy));
+    }
     for (int e = 0; e < 3; ++e) {
       const int a = e, b = (e + 1) % 3;
       double w[EqualOrderLayout::kFieldsPerNode];
@@ -198,10 +211,22 @@ double weightedResidual(const Assembler& assembler, const Vector& xOverlap, cons
         const double rx = twoMu * D.xx * phix + twoMu * D.xy * phiy + twoMu * D.tt * phi * invR -
                           p * (phix + phi * invR) - phi * fx;
         const double ry = twoMu * D.xy * phix + twoMu * D.yy * phiy - p * phiy - phi * fy;
-        const double rp = -phi * D.divergence() - tau * (phix * (px - fx) + phiy * (py - fy));
+        // The continuous problem's residual: no stabilization term (it enters below).
+        const double rp = -phi * D.divergence();
         eta -= wq * (w[kUx] * rx + w[kUy] * ry + w[kP] * rp);
       }
     }
+  }
+  // The prescribed tractions against the edge functions of their edges: R −= ∫ φ_e t̄ ds.
+  const auto& overlapNodes = dofMap.overlapNodes();
+  for (const TractionEdge& te : assembler.boundaryConditions().tractionEdges()) {
+    const auto& xa = mesh.coords[overlapNodes[te.nodes[0]]];
+    const auto& xb = mesh.coords[overlapNodes[te.nodes[1]]];
+    double w[EqualOrderLayout::kFieldsPerNode];
+    edgeWeights(dofMap, constraints, gx, gy, te.nodes[0], te.nodes[1], xa, xb, w);
+    integrateSegment(xa, xb, geometry, [&](double Na, double Nb, double ws) {
+      eta += ws * 4.0 * Na * Nb * (w[kUx] * te.traction[0] + w[kUy] * te.traction[1]);
+    });
   }
   return eta;
 }
@@ -232,6 +257,29 @@ std::map<std::string, double> dualWeightedResidual(FlowModel& model, const Vecto
     // ∂φ/∂x = J_uncᵀ c, then K_tᵀ z = ∂φ/∂x.
     unconstrained->apply(c, gradient, Teuchos::TRANS);
     model.solveTranspose(gradient, z);
+    // The adjoint lives in the test space: K_tᵀ's constraint columns leave junk at the held
+    // velocity components (z_c = g_c − J_fcᵀ z_f); the continuous z vanishes there.
+    {
+      const auto& constraints = assembler.boundaryConditions().constraints();
+      auto v = z.getLocalViewHost(Tpetra::Access::ReadWrite);
+      for (LO n = 0; n < dofMap.numOwnedNodes(); ++n) {
+        const NodeConstraint& nc = constraints[n];
+        double& zx = v(dofMap.dof(n, kUx), 0);
+        double& zy = v(dofMap.dof(n, kUy), 0);
+        if (nc.kind == NodeConstraint::Kind::Full) {
+          zx = zy = 0.0;
+        } else if (nc.kind == NodeConstraint::Kind::Single) {
+          const double an = zx * nc.a[0] + zy * nc.a[1];
+          zx -= an * nc.a[0];
+          zy -= an * nc.a[1];
+        }
+      }
+    }
+    // The weights come from ζ = c − z, the adjoint with the response's Dirichlet data (c on
+    // the group's held components, 0 on the others' held ones): z carries c's one-element layer
+    // next to the group, ζ is smooth there, so only ζ can be reconstructed. With it
+    // φ(u) − φ(u_h) ≈ R(u_h)(ζ⁺ − ζ_h) − S(u_h)(ζ_h): the sign of the functions below flipped.
+    z.update(1.0, c, -1.0);
     zOverlap.doImport(z, *dofMap.importer(), Tpetra::INSERT);
     gxOverlap.putScalar(0.0);
     gyOverlap.putScalar(0.0);
@@ -241,7 +289,7 @@ std::map<std::string, double> dualWeightedResidual(FlowModel& model, const Vecto
                          gyOverlap.getLocalViewHost(Tpetra::Access::ReadOnly));
     double global = 0.0;
     Teuchos::reduceAll(*dofMap.comm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
-    estimates[name] = global;
+    estimates[name] = -global;
   }
   return estimates;
 }
