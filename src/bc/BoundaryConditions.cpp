@@ -171,18 +171,19 @@ void BoundaryConditions::build(const Mesh& mesh) {
   }
 }
 
-void BoundaryConditions::imposeOnSolution(Vector& xOwned) const {
+void BoundaryConditions::imposeOnSolution(Vector& xOwned, bool homogeneous) const {
+  const double scale = homogeneous ? 0.0 : 1.0;
   auto x = xOwned.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (LO i = 0; i < m_dofMap.numOwnedNodes(); ++i) {
     const NodeConstraint& nc = m_constraints[i];
     double& ux = x(m_dofMap.dof(i, kUx), 0);
     double& uy = x(m_dofMap.dof(i, kUy), 0);
     if (nc.kind == NodeConstraint::Kind::Full) {
-      ux = nc.value[0];
-      uy = nc.value[1];
+      ux = scale * nc.value[0];
+      uy = scale * nc.value[1];
     } else if (nc.kind == NodeConstraint::Kind::Single) {
       // Move u along a until a·u = b (a is a unit vector).
-      const double gap = nc.b - (nc.a[0] * ux + nc.a[1] * uy);
+      const double gap = scale * nc.b - (nc.a[0] * ux + nc.a[1] * uy);
       ux += gap * nc.a[0];
       uy += gap * nc.a[1];
     }

@@ -259,22 +259,7 @@ std::map<std::string, double> dualWeightedResidual(FlowModel& model, const Vecto
     model.solveTranspose(gradient, z);
     // The adjoint lives in the test space: K_tᵀ's constraint columns leave junk at the held
     // velocity components (z_c = g_c − J_fcᵀ z_f); the continuous z vanishes there.
-    {
-      const auto& constraints = assembler.boundaryConditions().constraints();
-      auto v = z.getLocalViewHost(Tpetra::Access::ReadWrite);
-      for (LO n = 0; n < dofMap.numOwnedNodes(); ++n) {
-        const NodeConstraint& nc = constraints[n];
-        double& zx = v(dofMap.dof(n, kUx), 0);
-        double& zy = v(dofMap.dof(n, kUy), 0);
-        if (nc.kind == NodeConstraint::Kind::Full) {
-          zx = zy = 0.0;
-        } else if (nc.kind == NodeConstraint::Kind::Single) {
-          const double an = zx * nc.a[0] + zy * nc.a[1];
-          zx -= an * nc.a[0];
-          zy -= an * nc.a[1];
-        }
-      }
-    }
+    assembler.boundaryConditions().imposeOnSolution(z, true);
     // The weights come from ζ = c − z, the adjoint with the response's Dirichlet data (c on
     // the group's held components, 0 on the others' held ones): z carries c's one-element layer
     // next to the group, ζ is smooth there, so only ζ can be reconstructed. With it

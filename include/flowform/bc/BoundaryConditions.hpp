@@ -79,7 +79,8 @@ class BoundaryConditions {
 
   /// Sets the constrained components of an owned solution vector so that a·u = b holds
   /// (the initial guess then satisfies every constraint, and Newton keeps it so).
-  void imposeOnSolution(Vector& xOwned) const;
+  /// `homogeneous`: the constraints with zero data (a·u = 0, u = 0), for test-space vectors.
+  void imposeOnSolution(Vector& xOwned, bool homogeneous = false) const;
 
  private:
   void build(const Mesh& mesh);
