@@ -95,23 +95,29 @@ const SolveReport& Simulation::run() {
         << " dofs, " << m_comm->getSize() << " rank(s)\n";
   NonlinearSolver solver = newtonSolver(true);
   if (!m_walls.empty()) updateWallScales(*m_solution);
+  // The zero start puts every wall node at the kink of its friction law, and the predictor then
+  // sees frictionless walls. Where friction dominates (ν ≳ 1) that start can fail, so with walls
+  // it is tried with at most kFirstTryHalvings continuation halvings, then from walls that stick
+  // at rest (FrictionSettings::stickAtRest), then from frictionless walls with every halving the
+  // case allows (docs/contact.md).
   const Vector initial(*m_solution, Teuchos::Copy);
-  m_report = solver.solve(*m_solution, m_physics);
-  if (!m_report.converged && !m_walls.empty()) {
-    // The zero start puts every wall node at the kink of its friction law; the predictor then
-    // sees frictionless walls. Where friction dominates (ν ≳ 1) that start can fail: once more,
-    // with the walls sticking at rest (FrictionSettings::stickAtRest; docs/contact.md).
-    log() << "flowform: the first solve failed from frictionless walls (" << m_report.message
-          << "); solving again from walls that stick at rest\n";
+  const double caseMinimum = m_params.sublist("Solver").sublist("Continuation").get<double>("Minimum Step");
+  const double firstMinimum = m_walls.empty() ? 0.0 : std::max(caseMinimum, std::ldexp(1.0, -kFirstTryHalvings));
+  m_report = solver.solve(*m_solution, m_physics, firstMinimum);
+  auto again = [&](bool stick, const char* how) {
+    log() << "flowform: the first solve failed (" << m_report.message << "); solving again " << how << "\n";
     Tpetra::deep_copy(*m_solution, initial);
-    for (ContactWall& wall : m_walls) wall.setStickAtRest(true);
+    for (ContactWall& wall : m_walls) wall.setStickAtRest(stick);
     updateWallScales(*m_solution);
-    SolveReport again = solver.solve(*m_solution, m_physics);
+    SolveReport next = solver.solve(*m_solution, m_physics);
     for (ContactWall& wall : m_walls) wall.setStickAtRest(false);
-    again.newtonIterations += m_report.newtonIterations;
-    again.restarts = m_report.restarts + 1;
-    m_report = again;
-  }
+    next.newtonIterations += m_report.newtonIterations;
+    next.restarts = m_report.restarts + 1;
+    m_report = next;
+  };
+  if (!m_report.converged && !m_walls.empty()) again(true, "from walls that stick at rest");
+  if (!m_report.converged && !m_walls.empty() && firstMinimum > caseMinimum)
+    again(false, "from frictionless walls with every continuation halving");
   m_report.newtonPerSolve = {m_report.newtonIterations};
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);

@@ -302,7 +302,7 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
   return full;
 }
 
-SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target) {
+SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double minimumStep) {
   SolveReport report;
   const double atol = m_params.get<double>("Absolute Residual Tolerance");
   const double rtol = m_params.get<double>("Relative Residual Tolerance");
@@ -341,7 +341,7 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target) {
   const double e0Start = std::max(cont.get<double>("Start Cutoff"), target.material.cutoff);
   const bool needsContinuation = nStart < target.material.rateExponent || e0Start > target.material.cutoff;
   double step = needsContinuation ? cont.get<double>("Initial Step") : 1.0;
-  const double minStep = cont.get<double>("Minimum Step");
+  const double minStep = minimumStep > 0.0 ? minimumStep : cont.get<double>("Minimum Step");
   const double growth = cont.get<double>("Growth Factor");
 
   // The physics at λ: n and e0 interpolated geometrically, exactly the target at λ = 1.

@@ -92,6 +92,7 @@ class Simulation {
   std::unique_ptr<Responses> m_responses;
   std::unique_ptr<Sensitivity> m_sensitivity;
   std::unique_ptr<FiniteDifferenceCheck> m_fdCheck;
+  static constexpr int kFirstTryHalvings = 3;  ///< continuation halvings of the first start with walls
   std::map<std::string, double> m_functionals;
   std::map<std::string, double> m_errorEstimates;  ///< φ(u) − φ(u_h) estimated (estimation/DualWeightedResidual)
   int m_contactChanges = 0;

@@ -80,7 +80,9 @@ class NonlinearSolver {
   /// Solves F(x; target material) = 0 starting from x (which must satisfy the velocity
   /// constraints). On return x is the last converged state (the target's if converged).
   /// The model's physics is left at the target.
-  SolveReport solve(Vector& x, const FlowPhysics& target);
+  /// `minimumStep` > 0 replaces Continuation/Minimum Step for this solve (a first try that
+  /// gives up sooner).
+  SolveReport solve(Vector& x, const FlowPhysics& target, double minimumStep = 0.0);
 
   /// Solves again after a small change (a contact status change): Newton at the target
   /// from x; if that fails, the full solve() (predictor and continuation). `options`: a
