@@ -17,17 +17,22 @@ ContactStatusLoop::ContactStatusLoop(const Teuchos::ParameterList& contact, cons
       m_mesh(mesh),
       m_dofMap(dofMap) {}
 
-ContactStatusLoop::Decision ContactStatusLoop::decide(const std::vector<ContactWall>& walls, const Vector& x,
-                                                      double pressureShift, double penetrationShift) const {
+std::vector<ContactStatusLoop::WallValues> ContactStatusLoop::gatherWallValues(const std::vector<ContactWall>& walls,
+                                                                               const Vector& x) const {
+  std::vector<WallValues> values(walls.size());
+  for (size_t w = 0; w < walls.size(); ++w) wallValues(walls[w], m_dofMap, x, values[w].p, values[w].u);
+  return values;
+}
+
+ContactStatusLoop::Decision ContactStatusLoop::decide(const std::vector<ContactWall>& walls,
+                                                      const std::vector<WallValues>& values, double pressureShift,
+                                                      double penetrationShift) const {
   // The largest violation over all walls, at a limit of a contact zone (docs/theory.md §2).
   Decision d;
-  std::vector<double> p;
-  std::vector<std::array<double, 2>> u;
   for (size_t w = 0; w < walls.size(); ++w) {
-    wallValues(walls[w], m_dofMap, x, p, u);
     int stuck = 0;
     double second = 0.0;
-    const StatusChange c = walls[w].nextChange(p, u, m_pressureTolerance + pressureShift,
+    const StatusChange c = walls[w].nextChange(values[w].p, values[w].u, m_pressureTolerance + pressureShift,
                                                m_penetrationTolerance + penetrationShift, m_maxPerNode, &stuck, &second);
     d.unsettled += stuck;
     if (c.node < 0) continue;
@@ -42,15 +47,15 @@ ContactStatusLoop::Decision ContactStatusLoop::decide(const std::vector<ContactW
   return d;
 }
 
-bool ContactStatusLoop::certain(const std::vector<ContactWall>& walls, const Vector& x, const Decision& d,
-                                double pressureError, double penetrationError) const {
+bool ContactStatusLoop::certain(const std::vector<ContactWall>& walls, const std::vector<WallValues>& values,
+                                const Decision& d, double pressureError, double penetrationError) const {
   // Every state within the error bounds of x gives the decision d: the same change (or none)
   // with every violation moved by ±error, and a margin to the runner-up that no error can close.
   auto same = [&](const Decision& e) {
     return e.wall == d.wall && e.change.node == d.change.node && e.change.activate == d.change.activate;
   };
-  const Decision more = decide(walls, x, -pressureError, -penetrationError);  // every violation larger
-  const Decision fewer = decide(walls, x, pressureError, penetrationError);   // every violation smaller
+  const Decision more = decide(walls, values, -pressureError, -penetrationError);  // every violation larger
+  const Decision fewer = decide(walls, values, pressureError, penetrationError);   // every violation smaller
   if (!same(more) || !same(fewer)) return false;
   if (d.wall < 0) return true;
   return more.change.violation - more.runnerUp > 2.0 * std::max(pressureError, penetrationError);
@@ -90,7 +95,7 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
     const StageReport* last = again.stages.empty() ? nullptr : &again.stages.back();
     readable = again.stoppedAtCap && last && last->lastStep == 1.0 &&
                last->newtonIterations == 1 && last->residualNorm <= kContraction * last->startResidualNorm;
-    if (again.stoppedAtCap) {
+    if (readable) {
       // The error of the iterate at the wall nodes, bounded by the last Newton step.
       Vector step(x, Teuchos::Copy);
       step.update(-1.0, before, 1.0);
@@ -106,28 +111,34 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
     }
     if (!report.converged) report.message = "after contact change " + std::to_string(changes) + ": " + again.message;
   };
-  // Converges the current re-solve to the Solver tolerances.
+  // Converges the current re-solve to the Solver tolerances (converged means tight then).
   auto converge = [&]() {
     NewtonOptions options;
     options.continuing = true;
     resolve(options);
-    if (report.converged && !tight) {
-      report.converged = false;
-      report.message = "after contact change " + std::to_string(changes) + ": Newton did not converge";
-    }
   };
 
   while (report.converged) {
-    const Decision d = decide(walls, x, 0.0, 0.0);
-    if (!tight && m_certainIterate && !(readable && certain(walls, x, d, pressureError, penetrationError))) {
-      // Not yet sure what the converged state would decide: one more Newton iteration.
+    // Not yet sure what the converged state would decide (an iterate whose error nothing
+    // bounds, or a decision not certain within the bound): one more Newton iteration.
+    auto oneMoreIteration = [&]() {
+      if (steps >= kMaxStepsPerChange) {
+        converge();
+        return;
+      }
       NewtonOptions options;
       options.continuing = true;
       options.maxIterations = 1;
-      if (steps >= kMaxStepsPerChange)
-        converge();
-      else
-        resolve(options);
+      resolve(options);
+    };
+    if (!tight && m_certainIterate && !readable) {
+      oneMoreIteration();
+      continue;
+    }
+    const std::vector<WallValues> values = gatherWallValues(walls, x);
+    const Decision d = decide(walls, values);
+    if (!tight && m_certainIterate && !certain(walls, values, d, pressureError, penetrationError)) {
+      oneMoreIteration();
       continue;
     }
     if (d.wall < 0 && !tight) {

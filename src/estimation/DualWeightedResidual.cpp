@@ -20,7 +20,6 @@ using View = decltype(std::declval<const Vector&>().getLocalViewHost(Tpetra::Acc
 void recoverGradients(const Assembler& assembler, const Vector& zOverlap, Vector& gxOverlap, Vector& gyOverlap) {
   const DofMap& dofMap = assembler.dofMap();
   const Mesh& mesh = assembler.mesh();
-  const Geometry geometry = assembler.physics().kernel.geometry;
   const int npc = dofMap.nodesPerCell();
   Vector gx(dofMap.overlapMap()), gy(dofMap.overlapMap()), area(dofMap.overlapMap());
   {
@@ -32,7 +31,6 @@ void recoverGradients(const Assembler& assembler, const Vector& zOverlap, Vector
     LO dofs[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
     for (size_t k = 0; k < dofMap.cells().size(); ++k) {
       computeCellGeometry(mesh, dofMap.cells()[k], Geometry::PlaneStrain, g);  // plain area weights
-      (void)geometry;
       dofMap.cellDofs(k, dofs);
       const double w = g.centroid.weight[0];
       for (int f = 0; f < EqualOrderLayout::kFieldsPerNode; ++f) {

@@ -182,7 +182,7 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
 NonlinearSolver::NonlinearSolver(FlowModel& model, const Teuchos::ParameterList& params)
     : m_model(model), m_params(params) {
   m_params.validateParametersAndSetDefaults(*validParameters());
-  m_model.useStressDual(m_params.get<std::string>("Newton Linearization") == "Stress-Velocity");
+  m_model.useDualLinearization(m_params.get<std::string>("Newton Linearization") == "Stress-Velocity");
 }
 
 double NonlinearSolver::linearSolve(Vector& x, const FlowPhysics& physics) {

@@ -39,13 +39,21 @@ class ContactStatusLoop {
     double runnerUp = 0.0;
     int unsettled = 0;
   };
-  /// The decision at x with both tolerances moved by the shifts (> 0: fewer candidates).
-  Decision decide(const std::vector<ContactWall>& walls, const Vector& x, double pressureShift,
-                  double penetrationShift) const;
-  /// Whether every state within the error bounds of x (pressure, velocity at the wall nodes)
-  /// gives the decision d.
-  bool certain(const std::vector<ContactWall>& walls, const Vector& x, const Decision& d, double pressureError,
-               double penetrationError) const;
+  /// p and u at every node of one wall (replicated on every rank: wallValues).
+  struct WallValues {
+    std::vector<double> p;
+    std::vector<std::array<double, 2>> u;
+  };
+  /// Every wall's values at x (one collective import per wall).
+  std::vector<WallValues> gatherWallValues(const std::vector<ContactWall>& walls, const Vector& x) const;
+  /// The decision at the walls' values with both tolerances moved by the shifts (> 0: fewer
+  /// candidates).
+  Decision decide(const std::vector<ContactWall>& walls, const std::vector<WallValues>& values,
+                  double pressureShift = 0.0, double penetrationShift = 0.0) const;
+  /// Whether every state within the error bounds of the values (pressure, velocity at the wall
+  /// nodes) gives the decision d.
+  bool certain(const std::vector<ContactWall>& walls, const std::vector<WallValues>& values, const Decision& d,
+               double pressureError, double penetrationError) const;
 
   static constexpr int kMaxStepsPerChange = 8;  ///< then the re-solve is converged in one go
   static constexpr double kContraction = 0.5;  ///< ||F|| reduction of a step that makes an iterate readable

@@ -67,7 +67,6 @@ struct StressDualPoint {
 class StressDual {
  public:
   void clear() { m_points.clear(); }
-  bool empty() const { return m_points.empty(); }
   /// The points of cell k (allocated on first use for `numCells` cells).
   StressDualPoint* cell(size_t k, size_t numCells) {
     if (m_points.size() != numCells * kMaxQuadraturePoints) m_points.assign(numCells * kMaxQuadraturePoints, {});

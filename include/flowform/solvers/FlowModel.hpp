@@ -47,7 +47,7 @@ class FlowModel {
   void applyJacobian(const Vector& in, Vector& out) const { m_jacobian->apply(in, out); }
   /// Newton's linearization of the viscoplastic stress and of the slip: the dual methods
   /// (assembly/NewtonDual.hpp) when true, the exact tangent when false.
-  void useStressDual(bool on) {
+  void useDualLinearization(bool on) {
     m_useDual = on;
     m_dual.clear();
   }
