@@ -14,6 +14,8 @@
 #include "flowform/drivers/CaseOverrides.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
+#include "flowform/drivers/AdaptiveLoop.hpp"
+#include "flowform/drivers/CaseParameters.hpp"
 #include "flowform/drivers/Simulation.hpp"
 
 namespace {
@@ -106,6 +108,12 @@ int main(int argc, char* argv[]) {
     for (const auto& o : overrides) flowform::applyOverride(*params, o, *flowform::Simulation::validParameters());
 
     const std::string baseDir = std::filesystem::path(casePath).parent_path().string();
+    if (params->isSublist("Adaptivity")) {
+      flowform::validateCase(*params);
+      const int status = flowform::runAdaptive(*params, baseDir.empty() ? "." : baseDir, comm, outDir);
+      if (comm->getRank() == 0) flowform::log() << "flowform: results in " << outDir << "\n";
+      return status;
+    }
     flowform::Simulation simulation(*params, baseDir.empty() ? "." : baseDir, comm);
     simulation.run();
     simulation.writeOutput(outDir);

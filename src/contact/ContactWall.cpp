@@ -1,6 +1,7 @@
 #include "flowform/contact/ContactWall.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
@@ -153,6 +154,38 @@ std::vector<ContactWall> contactWallsFromCase(const Teuchos::ParameterList& bcLi
   }
   markConvexToolCorners(walls);
   return walls;
+}
+
+void ContactWall::takeStatusesFrom(const ContactWall& other) {
+  for (int k = 0; k < numNodes(); ++k) {
+    const auto& x = m_coords[k];
+    double bestDistance = std::numeric_limits<double>::max();
+    bool active = other.isActive(0);
+    for (int a = 0; a < other.numNodes(); ++a) {
+      const int b = other.next(a);
+      if (b < 0) {
+        if (other.numNodes() == 1) active = other.isActive(0);
+        continue;
+      }
+      // Nearest point of segment a–b: parameter t of the projection, clamped to [0, 1].
+      const auto& xa = other.nodeCoordinates(a);
+      const auto& xb = other.nodeCoordinates(b);
+      const double dx = xb[0] - xa[0], dy = xb[1] - xa[1];
+      const double len2 = dx * dx + dy * dy;
+      const double t = len2 > 0.0 ? std::clamp(((x[0] - xa[0]) * dx + (x[1] - xa[1]) * dy) / len2, 0.0, 1.0) : 0.0;
+      const double px = xa[0] + t * dx - x[0], py = xa[1] + t * dy - x[1];
+      const double d = px * px + py * py;
+      if (d < bestDistance) {
+        bestDistance = d;
+        if (std::abs(t - 0.5) < 1e-6)
+          active = other.isActive(a) && other.isActive(b);
+        else
+          active = t < 0.5 ? other.isActive(a) : other.isActive(b);
+      }
+    }
+    m_active[k] = active;
+  }
+  resetChangeCounts();
 }
 
 }  // namespace flowform

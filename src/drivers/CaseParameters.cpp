@@ -116,13 +116,32 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   valid->sublist("Responses", false, "functionals by name (include/flowform/assembly/Responses.hpp)")
       .sublist("<response name>", false, "one functional")
       .setParameters(*Responses::validParameters());
+  ParameterList& estimation =
+      valid->sublist("Error Estimation", false, "a posteriori error estimates of the responses (docs/theory.md §7)");
   Teuchos::setStringToIntegralParameter<int>(
       "Method", "None",
-      "None; Dual Weighted Residual: EXPERIMENTAL, not validated (docs/theory.md §7: its effectivity on the "
-      "extrusion is not yet usable), estimates of the Boundary Force and Mean Pressure responses into "
-      "summary.json functionals_error_estimate",
-      Teuchos::tuple<std::string>("None", "Dual Weighted Residual"),
-      &valid->sublist("Error Estimation", false, "a posteriori error estimates of the responses (issue #11, in progress)"));
+      "None; Two-Level: every response (and sensitivity) gets an estimate of its discretization error from one "
+      "exact Newton step on the uniformly refined mesh, eta = (phi_refined - phi) / (1 - 2^-Order), written to "
+      "summary.json functionals_error_estimate and sensitivities_error_estimate (docs/theory.md §7)",
+      Teuchos::tuple<std::string>("None", "Two-Level"), &estimation);
+  estimation.set("Order", 1.0,
+                 "p, the order in h at which the responses' error falls under uniform refinement: 1 where a singular "
+                 "corner dominates (the extrusion's die lip), 2 for a smooth solution; the estimate is "
+                 "(phi_refined - phi) / (1 - 2^-p)",
+                 Teuchos::rcp(new EnhancedNumberValidator<double>(0.1, 10.0)));
+  ParameterList& adaptivity = valid->sublist(
+      "Adaptivity", false,
+      "adaptive meshing to a requested accuracy (docs/theory.md §7): solve, estimate (Two-Level), size the next "
+      "mesh from the indicators, remesh the .geo through gmsh, carry the solution and contact statuses over, "
+      "solve again. No sublist: none of this runs");
+  adaptivity.set("Responses", Teuchos::Array<std::string>(),
+                 "names of the responses (Boundary Force or Mean Pressure) whose relative error is to be met");
+  adaptivity.set("Target Relative Error", 5e-3, "|estimated error| / |value| to reach for every named response",
+                 Teuchos::rcp(new EnhancedNumberValidator<double>(1e-8, 1.0)));
+  adaptivity.set("Maximum Cycles", 8, "solve-estimate-remesh cycles at most (the first mesh is cycle 0)",
+                 Teuchos::rcp(new EnhancedNumberValidator<int>(1, 100)));
+  adaptivity.set("Maximum Dofs", 400000, "no mesh is made with more dofs than this (predicted from the size field)",
+                 Teuchos::rcp(new EnhancedNumberValidator<int>(100, 100000000)));
   ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (docs/theory.md §2)");
   Teuchos::setStringToIntegralParameter<int>(
       "Status Update", "Certain Iterate",
@@ -175,6 +194,12 @@ void validateCase(ParameterList& params) {
   // Only a case with a Sensitivity sublist gets one (with defaults): none means no work.
   if (params.isSublist("Sensitivity"))
     validateSublist(params.sublist("Sensitivity"), valid.sublist("Sensitivity"), "Sensitivity");
+  if (params.isSublist("Adaptivity")) {
+    validateSublist(params.sublist("Adaptivity"), valid.sublist("Adaptivity"), "Adaptivity");
+    if (params.sublist("Adaptivity").get<Teuchos::Array<std::string>>("Responses").empty())
+      throw InputError("Adaptivity/Responses: name at least one response (Boundary Force or Mean Pressure) to "
+                       "adapt the mesh to");
+  }
 }
 
 FlowPhysics physicsFromCase(const ParameterList& params) {

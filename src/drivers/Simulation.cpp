@@ -1,7 +1,5 @@
 #include "flowform/drivers/Simulation.hpp"
 
-#include "flowform/estimation/DualWeightedResidual.hpp"
-
 #include <chrono>
 #include <filesystem>
 
@@ -12,6 +10,7 @@
 #include "flowform/contact/WallStates.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
+#include "flowform/discretization/SolutionTransfer.hpp"
 #include "flowform/drivers/CaseParameters.hpp"
 #include "flowform/drivers/OutputFields.hpp"
 #include "flowform/io/BoundaryCsvWriter.hpp"
@@ -41,13 +40,14 @@ double timerSeconds(const std::string& name) {
 Teuchos::RCP<const ParameterList> Simulation::validParameters() { return validCaseParameters(); }
 
 Simulation::Simulation(const ParameterList& caseParams, const std::string& baseDir,
-                       const Teuchos::RCP<const Comm>& comm)
-    : m_params(caseParams), m_comm(comm) {
+                       const Teuchos::RCP<const Comm>& comm, const SizeField* sizeField)
+    : m_params(caseParams), m_comm(comm), m_estimate(std::make_unique<ErrorEstimate>()), m_baseDir(baseDir) {
   const auto start = std::chrono::steady_clock::now();
   validateCase(m_params);
   m_physics = physicsFromCase(m_params);
+  if (sizeField) m_sizeField = *sizeField;
 
-  m_mesh = readMesh(m_params.sublist("Mesh"), baseDir, *comm);
+  m_mesh = readMesh(m_params.sublist("Mesh"), baseDir, *comm, sizeField);
   if (m_physics.kernel.geometry == Geometry::Axisymmetric)
     for (const auto& xy : m_mesh.coords)
       if (xy[0] < -1e-12)
@@ -103,7 +103,13 @@ const SolveReport& Simulation::run() {
   const Vector initial(*m_solution, Teuchos::Copy);
   const double caseMinimum = m_params.sublist("Solver").sublist("Continuation").get<double>("Minimum Step");
   const double firstMinimum = m_walls.empty() ? 0.0 : std::max(caseMinimum, std::ldexp(1.0, -kFirstTryHalvings));
-  m_report = solver.solve(*m_solution, m_physics, firstMinimum);
+  if (m_warmStart) {
+    // From another mesh's converged state (startFrom): Newton at the target from there; resolve()
+    // falls back to the predictor and the continuation only if that fails.
+    m_report = solver.resolve(*m_solution, m_physics);
+    if (!m_report.converged) Tpetra::deep_copy(*m_solution, initial);
+  }
+  if (!m_warmStart || !m_report.converged) m_report = solver.solve(*m_solution, m_physics, firstMinimum);
   auto again = [&](bool stick, const char* how) {
     log() << "flowform: the first solve failed (" << m_report.message << "); solving again " << how << "\n";
     Tpetra::deep_copy(*m_solution, initial);
@@ -123,13 +129,6 @@ const SolveReport& Simulation::run() {
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged)
     m_functionals = m_responses->evaluate(*m_solution, m_mesh, *m_dofMap, *m_assembler, m_walls);
-  if (m_report.converged && !m_functionals.empty() &&
-      m_params.sublist("Error Estimation").get<std::string>("Method") == "Dual Weighted Residual") {
-    m_errorEstimates = dualWeightedResidual(*m_model, *m_solution, *m_responses, m_mesh, m_walls);
-    for (const auto& [name, eta] : m_errorEstimates)
-      log() << "flowform: " << name << " = " << m_functionals[name] << ", estimated error " << eta << " ("
-            << 100.0 * std::abs(eta) / std::max(std::abs(m_functionals[name]), 1e-300) << " %)\n";
-  }
   m_solveSeconds = secondsSince(start);
   if (m_report.converged)
     log() << "flowform: converged (" << m_report.newtonIterations << " Newton iterations, "
@@ -137,7 +136,49 @@ const SolveReport& Simulation::run() {
   else
     log() << "flowform: NOT CONVERGED: " << m_report.message << "\n";
   if (m_report.converged && m_sensitivity->requested()) runSensitivity();
+  // The adaptive loop estimates itself (with the indicators it needs).
+  if (m_report.converged && exitStatus() == 0 && !m_params.isSublist("Adaptivity") &&
+      m_params.sublist("Error Estimation").get<std::string>("Method") == "Two-Level")
+    estimateErrors();
   return m_report;
+}
+
+void Simulation::estimateErrors(const std::vector<std::string>& indicatorResponses) {
+  *m_estimate = twoLevelEstimate(*this, indicatorResponses);
+  for (const auto& [name, eta] : m_estimate->functionals)
+    log() << "flowform: " << name << " = " << m_functionals[name] << ", estimated error " << eta << " ("
+          << 100.0 * std::abs(eta) / std::max(std::abs(m_functionals[name]), 1e-300) << " %)\n";
+  for (const auto& [name, byParameter] : m_estimate->sensitivities)
+    for (const auto& [parameter, eta] : byParameter)
+      log() << "flowform: d" << name << "/d(" << parameter << ") estimated error " << eta << "\n";
+  log() << "flowform: error estimate on the refined mesh (" << m_estimate->refinedDofs << " dofs) in "
+        << m_estimate->seconds << " s\n";
+}
+
+void Simulation::startFrom(const Simulation& other) {
+  interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap,
+              *m_solution);
+  m_bcs->imposeOnSolution(*m_solution);
+  for (ContactWall& wall : m_walls)
+    for (const ContactWall& from : other.contactWalls())
+      if (from.name() == wall.name()) wall.takeStatusesFrom(from);
+  if (!m_walls.empty()) updateWallScales(*m_solution);
+  m_warmStart = true;
+}
+
+void Simulation::newtonStep() {
+  // u ← u − K_t(u)⁻¹ R(u), K_t exact (a fresh linearization), statuses and penalty scales held.
+  Vector f(m_dofMap->ownedMap()), du(m_dofMap->ownedMap());
+  m_model->setPhysics(m_physics);
+  m_model->restartLinearization();
+  m_model->residual(*m_solution, f);
+  m_model->computeJacobian(*m_solution);
+  m_model->solve(f, du);
+  m_solution->update(-1.0, du, 1.0);
+  m_report.converged = true;
+  m_functionals = m_responses->evaluate(*m_solution, m_mesh, *m_dofMap, *m_assembler, m_walls);
+  if (m_sensitivity->requested())
+    m_sensitivity->compute(*m_model, *m_solution, *m_responses, m_mesh, *m_dofMap, m_walls);
 }
 
 void Simulation::moveNodes(const std::vector<std::array<double, 2>>& coords) {
@@ -150,7 +191,7 @@ void Simulation::moveNodes(const std::vector<std::array<double, 2>>& coords) {
 }
 
 int Simulation::exitStatus() const {
-  if (!m_report.converged) return 3;
+  if (!m_report.converged || !m_notMet.empty()) return 3;
   if (m_sensitivity->requested() && !m_sensitivity->finite()) return 3;
   if (m_fdCheck && !m_fdCheck->allConverged()) return 3;
   return 0;
@@ -266,17 +307,17 @@ void Simulation::writeOutput(const std::string& outDir) const {
                         {"output", secondsSince(start)}};
   summary["functionals"] = nlohmann::json::object();
   for (const auto& [name, value] : m_functionals) summary["functionals"][name] = value;
-  if (!m_errorEstimates.empty()) {
-    summary["functionals_error_estimate"] = nlohmann::json::object();
-    for (const auto& [name, eta] : m_errorEstimates) summary["functionals_error_estimate"][name] = eta;
-  }
+  m_estimate->report(summary);  // functionals_error_estimate, ..., when estimated
   summary["fd_check"] = nlohmann::json::object();
   m_sensitivity->report(summary);  // "sensitivities", "sensitivity" (what it cost)
   summary["sensitivity"]["finite_difference"] = {{"runs", 0}};
   if (m_fdCheck) m_fdCheck->report(summary);  // "fd_check"
-  if (m_report.converged && exitStatus() != 0)
+  if (!m_notMet.empty())
+    summary["message"] = m_notMet;
+  else if (m_report.converged && exitStatus() != 0)
     summary["message"] = !m_sensitivity->finite() ? "dq/dh is not finite (singular Jacobian?)"
                                                   : "a finite-difference run of the sensitivity check did not converge";
+  for (const auto& [key, block] : m_extraSummary.items()) summary[key] = block;
   summary["parameters"] = parameterListToJson(m_params);
   writeJsonFile(outDir + "/summary.json", summary);
 }

@@ -68,7 +68,7 @@ void gmshStep(const std::string& path, const char* what, Step step) {
 }
 
 /// Opens (and for a .geo, meshes) the file, then refines. Leaves the model in gmsh.
-void loadModel(const ReadOptions& opt) {
+void loadModel(const ReadOptions& opt, const SizeField* sizeField) {
   const bool quads = opt.cellType == CellType::Quadrilateral4;
   if (opt.isGeo) {
     gmsh::option::setNumber("Mesh.MeshSizeFactor", opt.sizeFactor);
@@ -103,6 +103,19 @@ void loadModel(const ReadOptions& opt) {
                          "' defines no DefineConstant named \"Parameters/" + name +
                          "\"; it defines: " + (defined.empty() ? "none" : defined));
     }
+    if (sizeField && !sizeField->empty())
+      gmshStep(opt.path, "setting the size field", [&] {
+        // The field alone sets the sizes: the .geo's point sizes, its own Background Field,
+        // curvature and the extension of boundary sizes inwards are all replaced by it.
+        const int view = gmsh::view::add("flowform size field");
+        gmsh::view::addListData(view, "ST", sizeField->numTriangles(), sizeField->triangles);
+        const int field = gmsh::model::mesh::field::add("PostView");
+        gmsh::model::mesh::field::setNumber(field, "ViewTag", view);
+        gmsh::model::mesh::field::setAsBackgroundMesh(field);
+        gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+        gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+        gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+      });
     gmshStep(opt.path, "meshing it", [] { gmsh::model::mesh::generate(2); });
   }
   for (int i = 0; i < opt.refinements; ++i)
@@ -338,11 +351,11 @@ Mesh extractMesh(const ReadOptions& opt) {
   return mesh;
 }
 
-Mesh readOnRoot(const ReadOptions& opt) {
+Mesh readOnRoot(const ReadOptions& opt, const SizeField* sizeField) {
   if (!std::filesystem::is_regular_file(opt.path))
     throw InputError("mesh file '" + opt.path + "' (Mesh/File) does not exist");
   GmshSession session(opt.verbose);
-  loadModel(opt);
+  loadModel(opt, sizeField);
   Mesh mesh;
   gmshStep(opt.path, "extracting the mesh", [&] { mesh = extractMesh(opt); });
   return mesh;
@@ -352,9 +365,11 @@ Mesh readOnRoot(const ReadOptions& opt) {
 }  // namespace
 
 Mesh readMesh(const Teuchos::ParameterList& meshParams, const std::string& baseDir,
-              const Teuchos::Comm<int>& comm) {
+              const Teuchos::Comm<int>& comm, const SizeField* sizeField) {
   const ReadOptions opt = parseOptions(meshParams, baseDir);
-  return broadcastMesh(comm, [&] { return readOnRoot(opt); }, "reading mesh file '" + opt.path + "'");
+  if (sizeField && !sizeField->empty() && !opt.isGeo)
+    throw InputError("mesh file '" + opt.path + "': a size field (Adaptivity) needs a .geo file to mesh anew");
+  return broadcastMesh(comm, [&] { return readOnRoot(opt, sizeField); }, "reading mesh file '" + opt.path + "'");
 }
 
 }  // namespace flowform

@@ -115,6 +115,11 @@ class ContactWall {
     m_flowStress = s.flowStress;
   }
 
+  /// The statuses of `other` (the same wall on another mesh) carried to this wall's nodes:
+  /// each node takes the status of the nearest point of `other`'s polyline (the nearer end of
+  /// that segment; a node at a segment's midpoint is active only when both ends are). The
+  /// change counts start again from zero. For starting a solve on a new mesh from a converged one.
+  void takeStatusesFrom(const ContactWall& other);
   /// Per wall node: viscosity μ and flow stress σ̄ (largest over the adjacent cells).
   void setScales(std::vector<double> viscosity, std::vector<double> flowStress);
   void setFrictionCoefficient(double nu) { m_settings.frictionCoefficient = nu; }

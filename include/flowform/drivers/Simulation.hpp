@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
+#include <nlohmann/json.hpp>
 
 #include "flowform/assembly/Assembler.hpp"
 #include "flowform/assembly/Responses.hpp"
@@ -17,8 +18,10 @@
 #include "flowform/contact/ContactWall.hpp"
 #include "flowform/discretization/DofMap.hpp"
 #include "flowform/drivers/ContactStatusLoop.hpp"
+#include "flowform/drivers/TwoLevelEstimate.hpp"
 #include "flowform/io/FieldSet.hpp"
 #include "flowform/mesh/Mesh.hpp"
+#include "flowform/mesh/SizeField.hpp"
 #include "flowform/sensitivity/FiniteDifferenceCheck.hpp"
 #include "flowform/sensitivity/Sensitivity.hpp"
 #include "flowform/solvers/FlowModel.hpp"
@@ -34,13 +37,26 @@ class Simulation {
   /// Validates `caseParams` (InputError naming the parameter and the allowed ones), reads
   /// the mesh (relative paths against `baseDir`) and builds maps, conditions and the model.
   /// Nothing is written.
+  /// `sizeField`: mesh the case's .geo with these sizes instead of its own (the adaptive loop).
   Simulation(const Teuchos::ParameterList& caseParams, const std::string& baseDir,
-             const Teuchos::RCP<const Comm>& comm);
+             const Teuchos::RCP<const Comm>& comm, const SizeField* sizeField = nullptr);
   ~Simulation();
 
   /// Solves the flow problem, then, when the case asks, the sensitivities (DDM) and their
   /// finite-difference check. The report says whether the flow solve converged.
   const SolveReport& run();
+
+  /// Starts from `other`'s state (another mesh of the same case): its solution interpolated at
+  /// this mesh's nodes, its walls' statuses carried to this mesh's wall nodes
+  /// (ContactWall::takeStatusesFrom), the penalty scales from that state. run() then re-solves
+  /// from there, without the continuation (it falls back to it only if Newton fails).
+  void startFrom(const Simulation& other);
+
+  /// One full Newton step with the exact tangent from the current state, the statuses held:
+  /// the linearized solve of this mesh's problem. The responses are evaluated at the result,
+  /// and the DDM sensitivities when the case asks for them (no finite-difference check).
+  /// The two-level error estimate takes it on the refined mesh (drivers/TwoLevelEstimate).
+  void newtonStep();
 
   /// Moves the mesh nodes to `coords` (same topology; every cell must stay positively
   /// oriented, else InputError naming the cell) and refreshes what caches geometry: the
@@ -52,6 +68,20 @@ class Simulation {
   void writeOutput(const std::string& outDir) const;
 
   const Teuchos::ParameterList& parameters() const { return m_params; }
+  const std::string& baseDirectory() const { return m_baseDir; }
+  /// The size field this mesh was made with (empty: the .geo's own sizes).
+  const SizeField& sizeField() const { return m_sizeField; }
+  /// The error estimate of the responses (estimated() false when none was asked for).
+  const ErrorEstimate& errorEstimate() const { return *m_estimate; }
+  /// Estimates the responses' errors now (the two-level estimate), with nodal indicators for
+  /// `indicatorResponses` (the adaptive loop's targets). run() calls it when the case's
+  /// Error Estimation/Method asks.
+  void estimateErrors(const std::vector<std::string>& indicatorResponses = {});
+  /// The run met its numbers but not what was asked of it (the adaptive loop's target): exit
+  /// status 3 with `why` as the summary's message.
+  void setNotMet(const std::string& why) { m_notMet = why; }
+  /// A block the summary carries as it is under `key` (the adaptive loop's cycles).
+  void addSummaryBlock(const std::string& key, const nlohmann::json& block) { m_extraSummary[key] = block; }
   const Mesh& mesh() const { return m_mesh; }
   const DofMap& dofMap() const { return *m_dofMap; }
   const FlowPhysics& physics() const { return m_physics; }
@@ -67,6 +97,7 @@ class Simulation {
   /// The case's responses at the current solution (empty before run()).
   const std::map<std::string, double>& functionals() const { return m_functionals; }
   const Sensitivity& sensitivity() const { return *m_sensitivity; }
+  const Responses& responses() const { return *m_responses; }
 
   /// Nodal velocity and pressure, and the cell fields the case asks for, gathered on rank 0
   /// (other ranks get empty arrays).
@@ -94,7 +125,12 @@ class Simulation {
   std::unique_ptr<FiniteDifferenceCheck> m_fdCheck;
   static constexpr int kFirstTryHalvings = 3;  ///< continuation halvings of the first start with walls
   std::map<std::string, double> m_functionals;
-  std::map<std::string, double> m_errorEstimates;  ///< φ(u) − φ(u_h) estimated (estimation/DualWeightedResidual)
+  std::unique_ptr<ErrorEstimate> m_estimate;
+  std::string m_baseDir;
+  SizeField m_sizeField;
+  bool m_warmStart = false;
+  std::string m_notMet;  ///< startFrom() gave the state: run() re-solves from it
+  nlohmann::json m_extraSummary = nlohmann::json::object();
   int m_contactChanges = 0;
   std::unique_ptr<DofMap> m_dofMap;
   std::unique_ptr<BoundaryConditions> m_bcs;

@@ -8,6 +8,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "flowform/mesh/Mesh.hpp"
+#include "flowform/mesh/SizeField.hpp"
 
 namespace flowform {
 
@@ -41,8 +42,9 @@ Teuchos::RCP<const Teuchos::ParameterList> validMeshParameters();
 /// orientation disagrees with most cells of its gmsh surface is an inverted cell.
 /// A .geo asked for quadrilaterals is meshed with Mesh.RecombineAll = 1 (Blossom); if
 /// triangles remain, that is an InputError suggesting Mesh.SubdivisionAlgorithm = 1.
+/// `sizeField` (a .geo only): mesh with the sizes it gives instead of the .geo's own (SizeField.hpp).
 /// Collective: every rank of `comm` must call it.
 Mesh readMesh(const Teuchos::ParameterList& meshParams, const std::string& baseDir,
-              const Teuchos::Comm<int>& comm);
+              const Teuchos::Comm<int>& comm, const SizeField* sizeField = nullptr);
 
 }  // namespace flowform

@@ -1,0 +1,33 @@
+// Adaptive meshing to a requested accuracy (the case's Adaptivity sublist; docs/theory.md §7).
+//
+// Cycle k: solve on mesh k (cycle 0: the case's own mesh; later ones start from the previous
+// cycle's solution and contact statuses, interpolated: no continuation), estimate every
+// response's error (TwoLevelEstimate) with nodal indicators for the target responses, stop when
+// every target has |η|/|φ| ≤ Target Relative Error, else size mesh k+1 from the indicators and
+// let gmsh mesh the .geo anew with that size field (curves and physical groups exact).
+//
+// Sizing (error equidistribution). With e_a = Σ_targets (nodal share of |η_φ|)/(tol |φ|) at
+// node a of mesh k (so Σ_a e_a ≈ Σ_targets |η_φ|/(tol |φ|)), N the node count and h_a the mean
+// length of the edges at a, each node is asked to carry θ = 1/(2N) after the remesh:
+//     h_a' = h_a · clamp((θ / e_a)^(1/2), 1/8, 2),
+// the square root because a node's share falls at least like its area (h²) where the solution is
+// smooth and like h at a singular corner; the clamp keeps one cycle from over-refining or
+// coarsening more than a factor 2. h_a' is capped by the largest size of the first mesh, and
+// scaled up uniformly when the predicted dof count Σ_a 3 (h_a/h_a')² exceeds Maximum Dofs.
+#pragma once
+
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "flowform/core/TpetraTypes.hpp"
+
+namespace flowform {
+
+/// Runs the adaptive loop of the validated case and writes the last cycle's results, with the
+/// list of cycles, into `outDir`. Returns the exit status: 0, or 3 when a solve did not
+/// converge or the target was not met within Maximum Cycles / Maximum Dofs.
+int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& baseDir,
+                const Teuchos::RCP<const Comm>& comm, const std::string& outDir);
+
+}  // namespace flowform

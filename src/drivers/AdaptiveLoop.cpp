@@ -1,0 +1,147 @@
+#include "flowform/drivers/AdaptiveLoop.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/drivers/Simulation.hpp"
+#include "flowform/mesh/SizeField.hpp"
+
+namespace flowform {
+
+namespace {
+
+/// Mean length of the edges at each node (a cell's edges, each counted from both cells).
+std::vector<double> nodalSizes(const Mesh& mesh) {
+  std::vector<double> sum(mesh.numNodes(), 0.0), count(mesh.numNodes(), 0.0);
+  const int npc = nodesPerCell(mesh.cellType);
+  for (GO c = 0; c < mesh.numCells(); ++c)
+    for (int a = 0; a < npc; ++a) {
+      const GO i = mesh.cell(c)[a], j = mesh.cell(c)[(a + 1) % npc];
+      const double l = std::hypot(mesh.coords[i][0] - mesh.coords[j][0], mesh.coords[i][1] - mesh.coords[j][1]);
+      sum[i] += l;
+      sum[j] += l;
+      count[i] += 1.0;
+      count[j] += 1.0;
+    }
+  for (GO n = 0; n < mesh.numNodes(); ++n) sum[n] /= std::max(count[n], 1.0);
+  return sum;
+}
+
+/// The next mesh's nodal sizes from the indicators (AdaptiveLoop.hpp).
+std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::string>& targets, double tolerance,
+                              double maxSize, double maxDofs) {
+  const Mesh& mesh = sim.mesh();
+  const ErrorEstimate& estimate = sim.errorEstimate();
+  std::vector<double> e(mesh.numNodes(), 0.0);
+  for (const std::string& name : targets) {
+    const std::vector<double>& shares = estimate.indicators.at(name);
+    double total = 0.0;
+    for (double v : shares) total += v;
+    if (total <= 0.0) continue;
+    // Scaled so that the shares add up to |η_φ| / (tol |φ|).
+    const double scale = std::abs(estimate.functionals.at(name)) /
+                         (tolerance * std::max(std::abs(sim.functionals().at(name)), 1e-300) * total);
+    for (GO n = 0; n < mesh.numNodes(); ++n) e[n] += scale * shares[n];
+  }
+  const double theta = 0.5 / static_cast<double>(mesh.numNodes());
+  std::vector<double> h = nodalSizes(mesh), next(h.size());
+  double predictedNodes = 0.0;
+  for (GO n = 0; n < mesh.numNodes(); ++n) {
+    const double ratio = e[n] > 0.0 ? std::clamp(std::sqrt(theta / e[n]), 0.125, 2.0) : 2.0;
+    next[n] = std::min(h[n] * ratio, maxSize);
+    predictedNodes += (h[n] / next[n]) * (h[n] / next[n]);
+  }
+  const double dofsPerNode = 3.0;
+  if (dofsPerNode * predictedNodes > maxDofs) {
+    const double grow = std::sqrt(dofsPerNode * predictedNodes / maxDofs);
+    for (double& v : next) v *= grow;
+  }
+  return next;
+}
+
+}  // namespace
+
+int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& baseDir,
+                const Teuchos::RCP<const Comm>& comm, const std::string& outDir) {
+  const Teuchos::ParameterList& adaptivity = caseParams.sublist("Adaptivity");
+  const auto targetArray = adaptivity.get<Teuchos::Array<std::string>>("Responses");
+  const std::vector<std::string> targets(targetArray.begin(), targetArray.end());
+  const double tolerance = adaptivity.get<double>("Target Relative Error");
+  const int maxCycles = adaptivity.get<int>("Maximum Cycles");
+  const double maxDofs = adaptivity.get<int>("Maximum Dofs");
+
+  nlohmann::json cycles = nlohmann::json::array();
+  std::unique_ptr<Simulation> sim, previous;
+  SizeField field;
+  double maxSize = 0.0;
+  bool met = false;
+  std::string why;
+  for (int cycle = 0; cycle < maxCycles; ++cycle) {
+    const auto start = std::chrono::steady_clock::now();
+    sim = std::make_unique<Simulation>(caseParams, baseDir, comm, cycle == 0 ? nullptr : &field);
+    if (cycle == 0) {
+      // Every target must be a response the estimate can localize.
+      for (const std::string& name : targets)
+        if (std::find(sim->responses().names().begin(), sim->responses().names().end(), name) ==
+            sim->responses().names().end())
+          throw InputError("Adaptivity/Responses: '" + name + "' is not one of the case's Responses");
+      const std::vector<double> h = nodalSizes(sim->mesh());
+      maxSize = *std::max_element(h.begin(), h.end());
+    }
+    if (previous) sim->startFrom(*previous);
+    log() << "adaptivity: cycle " << cycle << ": " << sim->dofMap().numGlobalDofs() << " dofs\n";
+    sim->run();
+    if (sim->exitStatus() != 0) {
+      why = "cycle " + std::to_string(cycle) + ": the solve did not converge";
+      break;
+    }
+    sim->estimateErrors(targets);
+    const ErrorEstimate& estimate = sim->errorEstimate();
+    for (const std::string& name : targets)
+      if (!estimate.indicators.count(name))
+        throw InputError("Adaptivity/Responses: '" + name +
+                         "' is not a Boundary Force or Mean Pressure response (only those have indicators)");
+    nlohmann::json entry = {{"cycle", cycle},
+                            {"dofs", sim->dofMap().numGlobalDofs()},
+                            {"newton_iterations", sim->report().newtonIterations},
+                            {"contact_changes", sim->contactChanges()},
+                            {"functionals", sim->functionals()},
+                            {"error_estimate", estimate.functionals}};
+    met = true;
+    for (const std::string& name : targets) {
+      const double relative = std::abs(estimate.functionals.at(name)) /
+                              std::max(std::abs(sim->functionals().at(name)), 1e-300);
+      entry["relative_error_estimate"][name] = relative;
+      log() << "adaptivity: cycle " << cycle << ": " << name << " = " << sim->functionals().at(name)
+            << ", estimated relative error " << relative << " (target " << tolerance << ")\n";
+      met = met && relative <= tolerance;
+    }
+    entry["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    cycles.push_back(entry);
+    if (met) break;
+    if (cycle + 1 == maxCycles) {
+      why = "the target relative error " + std::to_string(tolerance) + " was not met in " +
+            std::to_string(maxCycles) + " cycles (Adaptivity/Maximum Cycles)";
+      break;
+    }
+    field = sizeFieldOnMesh(sim->mesh(), nextSizes(*sim, targets, tolerance, maxSize, maxDofs));
+    previous = std::move(sim);
+  }
+  nlohmann::json block = {{"cycles", cycles}, {"target_met", met}, {"target_relative_error", tolerance}};
+  if (!met) {
+    block["message"] = why;
+    sim->setNotMet(why);
+    log() << "adaptivity: " << why << "\n";
+  }
+  sim->addSummaryBlock("adaptivity", block);
+  sim->writeOutput(outDir);
+  return sim->exitStatus();
+}
+
+}  // namespace flowform

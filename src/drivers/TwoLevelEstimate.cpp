@@ -1,0 +1,110 @@
+#include "flowform/drivers/TwoLevelEstimate.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <nlohmann/json.hpp>
+
+#include "flowform/core/Log.hpp"
+#include "flowform/discretization/SolutionTransfer.hpp"
+#include "flowform/drivers/Simulation.hpp"
+#include "flowform/estimation/ResponseAdjoint.hpp"
+#include "flowform/mesh/PointLocator.hpp"
+
+namespace flowform {
+
+namespace {
+
+/// Nodal shares of the localized estimate on the coarse mesh (TwoLevelEstimate.hpp):
+/// e_i = |Σ_fields R_f,i (z_f − I_h z_f)_i| at each refined node i, spread over the coarse
+/// cell that holds node i by its shape functions there. Replicated on every rank.
+std::vector<double> coarseIndicator(const Simulation& coarse, const Simulation& fine, const Vector& residual,
+                                    const Vector& z) {
+  const DofMap& fineDofs = fine.dofMap();
+  const DofMap& coarseDofs = coarse.dofMap();
+  // I_h z_f: the adjoint at the coarse nodes (which are refined nodes), interpolated back.
+  Vector zCoarse(coarseDofs.ownedMap()), zInterpolant(fineDofs.ownedMap());
+  interpolate(fine.mesh(), fineDofs, replicate(z, fineDofs), coarse.mesh(), coarseDofs, zCoarse);
+  interpolate(coarse.mesh(), coarseDofs, replicate(zCoarse, coarseDofs), fine.mesh(), fineDofs, zInterpolant);
+  const auto r = residual.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto zf = z.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto zi = zInterpolant.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const PointLocator locator(coarse.mesh());
+  const int npc = nodesPerCell(coarse.mesh().cellType);
+  std::vector<double> local(coarse.mesh().numNodes(), 0.0), global(local.size(), 0.0);
+  for (LO n = 0; n < fineDofs.numOwnedNodes(); ++n) {
+    const GO node = fineDofs.overlapNodes()[n];
+    double e = 0.0;
+    for (int f = 0; f < fineDofs.numFields(node); ++f) {
+      const LO d = fineDofs.dof(n, f);
+      e += r(d, 0) * (zf(d, 0) - zi(d, 0));
+    }
+    const CellPoint at = locator.locate(fine.mesh().coords[node]);
+    for (int a = 0; a < npc; ++a) local[coarse.mesh().cell(at.cell)[a]] += at.weights[a] * std::abs(e);
+  }
+  Teuchos::reduceAll(*coarseDofs.comm(), Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(),
+                     global.data());
+  return global;
+}
+
+}  // namespace
+
+ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::string>& indicatorResponses) {
+  const auto start = std::chrono::steady_clock::now();
+  ErrorEstimate estimate;
+  const Teuchos::ParameterList& caseParams = coarse.parameters();
+  estimate.order = caseParams.sublist("Error Estimation").get<double>("Order");
+
+  // The same case on the mesh refined once more; no estimate, adaptivity or FD check there.
+  Teuchos::ParameterList params = caseParams;
+  Teuchos::ParameterList& mesh = params.sublist("Mesh");
+  mesh.set("Uniform Refinements", mesh.get<int>("Uniform Refinements") + 1);
+  params.sublist("Error Estimation").set("Method", "None");
+  if (params.isSublist("Adaptivity")) params.remove("Adaptivity");
+  if (params.isSublist("Sensitivity")) params.sublist("Sensitivity").set("Finite Difference Check", false);
+  Simulation fine(params, coarse.baseDirectory(), coarse.dofMap().comm(), &coarse.sizeField());
+  fine.startFrom(coarse);
+  estimate.refinedDofs = static_cast<GO>(fine.dofMap().numGlobalDofs());
+
+  // Indicators: the refined residual at I u_h weighted by the refined adjoint at I u_h.
+  if (!indicatorResponses.empty()) {
+    Vector residual(fine.dofMap().ownedMap()), z(fine.dofMap().ownedMap());
+    fine.model().residual(fine.solution(), residual);
+    for (const std::string& name : indicatorResponses)
+      if (responseAdjoint(fine.model(), fine.solution(), fine.responses(), name, fine.mesh(), z))
+        estimate.indicators[name] = coarseIndicator(coarse, fine, residual, z);
+  }
+
+  fine.run();
+  const double factor = 1.0 / (1.0 - std::pow(2.0, -estimate.order));
+  estimate.refinedFunctionals = fine.functionals();
+  for (const auto& [name, value] : coarse.functionals()) {
+    auto it = estimate.refinedFunctionals.find(name);
+    if (it != estimate.refinedFunctionals.end()) estimate.functionals[name] = factor * (it->second - value);
+  }
+  if (coarse.sensitivity().computed() && fine.sensitivity().computed()) {
+    estimate.refinedSensitivities = fine.sensitivity().responseDerivatives();
+    for (const auto& [name, byParameter] : coarse.sensitivity().responseDerivatives())
+      for (const auto& [parameter, value] : byParameter)
+        estimate.sensitivities[name][parameter] = factor * (estimate.refinedSensitivities[name][parameter] - value);
+  }
+  estimate.estimated = true;
+  estimate.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return estimate;
+}
+
+void ErrorEstimate::report(nlohmann::json& summary) const {
+  if (!estimated) return;
+  summary["functionals_error_estimate"] = nlohmann::json::object();
+  for (const auto& [name, eta] : functionals) summary["functionals_error_estimate"][name] = eta;
+  if (!sensitivities.empty()) summary["sensitivities_error_estimate"] = sensitivities;
+  summary["error_estimation"] = {{"method", "Two-Level"},
+                                 {"order", order},
+                                 {"refined_dofs", refinedDofs},
+                                 {"refined_functionals", refinedFunctionals},
+                                 {"seconds", seconds}};
+  if (!refinedSensitivities.empty()) summary["error_estimation"]["refined_sensitivities"] = refinedSensitivities;
+}
+
+}  // namespace flowform

@@ -1,0 +1,24 @@
+#include "flowform/estimation/ResponseAdjoint.hpp"
+
+namespace flowform {
+
+bool responseAdjoint(FlowModel& model, const Vector& x, const Responses& responses, const std::string& name,
+                     const Mesh& mesh, Vector& z) {
+  const Assembler& assembler = model.assembler();
+  const DofMap& dofMap = assembler.dofMap();
+  Vector c(dofMap.ownedMap()), gradient(dofMap.ownedMap());
+  if (!responses.reactionWeights(name, mesh, dofMap, assembler.physics().kernel.geometry, c)) return false;
+  auto unconstrained = assembler.createJacobian();
+  assembler.unconstrainedJacobian(x, *unconstrained);
+  model.restartLinearization();  // the exact K_t at x
+  model.computeJacobian(x);
+  // ∂φ/∂q = J_uncᵀ c, then K_tᵀ z = ∂φ/∂q.
+  unconstrained->apply(c, gradient, Teuchos::TRANS);
+  model.solveTranspose(gradient, z);
+  // K_tᵀ's constraint columns leave junk at the held velocity components; z lives in the
+  // test space, which vanishes there.
+  assembler.boundaryConditions().imposeOnSolution(z, true);
+  return true;
+}
+
+}  // namespace flowform
