@@ -155,10 +155,13 @@ void Simulation::estimateErrors(const std::vector<std::string>& indicatorRespons
         << m_estimate->seconds << " s\n";
 }
 
+void Simulation::interpolateFrom(const Simulation& other, Vector& x) const {
+  interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap, x);
+  m_bcs->imposeOnSolution(x);
+}
+
 void Simulation::startFrom(const Simulation& other) {
-  interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap,
-              *m_solution);
-  m_bcs->imposeOnSolution(*m_solution);
+  interpolateFrom(other, *m_solution);
   for (ContactWall& wall : m_walls)
     for (const ContactWall& from : other.contactWalls())
       if (from.name() == wall.name()) wall.takeStatusesFrom(from);

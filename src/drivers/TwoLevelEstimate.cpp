@@ -67,7 +67,9 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
   fine.startFrom(coarse);
   estimate.refinedDofs = static_cast<GO>(fine.dofMap().numGlobalDofs());
 
-  // Indicators: the refined residual at I u_h weighted by the refined adjoint at I u_h.
+  // Indicators: the refined residual at I u_h (statuses as carried over) weighted by the
+  // refined adjoint there. Measured alternatives (docs/theory.md §7): ζ = c − z as the weight,
+  // and the statuses the refined solve converges to; both sized worse meshes.
   if (!indicatorResponses.empty()) {
     Vector residual(fine.dofMap().ownedMap()), z(fine.dofMap().ownedMap());
     fine.model().residual(fine.solution(), residual);
@@ -75,7 +77,6 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
       if (responseAdjoint(fine.model(), fine.solution(), fine.responses(), name, fine.mesh(), z))
         estimate.indicators[name] = coarseIndicator(coarse, fine, residual, z);
   }
-
   fine.run();
   const double factor = 1.0 / (1.0 - std::pow(2.0, -estimate.order));
   estimate.refinedFunctionals = fine.functionals();

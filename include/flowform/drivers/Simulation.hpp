@@ -52,6 +52,9 @@ class Simulation {
   /// from there, without the continuation (it falls back to it only if Newton fails).
   void startFrom(const Simulation& other);
 
+  /// `other`'s solution interpolated at this mesh's nodes, the constraints imposed, into `x`.
+  void interpolateFrom(const Simulation& other, Vector& x) const;
+
   /// One full Newton step with the exact tangent from the current state, the statuses held:
   /// the linearized solve of this mesh's problem. The responses are evaluated at the result,
   /// and the DDM sensitivities when the case asks for them (no finite-difference check).
