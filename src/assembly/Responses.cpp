@@ -23,10 +23,10 @@ Teuchos::RCP<const Teuchos::ParameterList> Responses::validParameters() {
   valid = Teuchos::rcp(new Teuchos::ParameterList("Response"));
   Teuchos::setStringToIntegralParameter<int>(
       "Type", "Boundary Force", "what to compute (see include/flowform/assembly/Responses.hpp)",
-      Teuchos::tuple<std::string>("Boundary Force", "Mean Pressure", "Boundary Power", "Plastic Power",
+      Teuchos::tuple<std::string>("Boundary Force", "Mean Pressure", "Boundary Power", "Flow Rate", "Plastic Power",
                                   "Friction Power", "Penalty Power", "Stabilization Power", "Dead Zone"),
       valid.get());
-  valid->set("Boundary", "", "boundary group (Boundary Force, Mean Pressure, Boundary Power)");
+  valid->set("Boundary", "", "boundary group (Boundary Force, Mean Pressure, Boundary Power, Flow Rate)");
   Teuchos::setStringToIntegralParameter<int>("Component", "X", "force component (Boundary Force)",
                                              Teuchos::tuple<std::string>("X", "Y"), valid.get());
   valid->set("Fraction", 0.01, "Dead Zone: |u| below this fraction of the reference speed",
@@ -47,7 +47,8 @@ Responses::Responses(const Teuchos::ParameterList& list, const Mesh& mesh) {
     }
     Response resp{name, r.get<std::string>("Type"), r.get<std::string>("Boundary"), r.get<std::string>("Component"),
                   r.get<double>("Fraction"), r.get<double>("Reference Speed")};
-    const bool needsBoundary = resp.type == "Boundary Force" || resp.type == "Mean Pressure" || resp.type == "Boundary Power";
+    const bool needsBoundary = resp.type == "Boundary Force" || resp.type == "Mean Pressure" ||
+                               resp.type == "Boundary Power" || resp.type == "Flow Rate";
     if (needsBoundary && !mesh.hasBoundary(resp.boundary))
       throw InputError("Responses/" + name + "/Boundary: mesh '" + mesh.source + "' has no boundary group '" +
                        resp.boundary + "'; it has: " + mesh.boundaryNames());
@@ -202,6 +203,33 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
       Scalar value = sumOverRanks(comm, local);
       if (r.type == "Mean Pressure") value /= curveArea(mesh, curve, geometry);
       values[r.name] = value;
+    } else if (r.type == "Flow Rate") {
+      // Q = ∫_Γ u·n dΓ with u linear on each segment: Q = Σ_k u_k·w_k, w_k = Σ_segments n_s ∫ N_k dΓ
+      // (n_s the segment's outward normal; dΓ = 2πr ds when axisymmetric). Each node by its owner.
+      const BoundaryCurve curve = buildBoundaryCurve(mesh, mesh.boundary(r.boundary));
+      const size_t numNodes = curve.nodes.size();
+      const size_t numSegments = curve.closed ? numNodes : numNodes - 1;
+      std::vector<std::array<double, 2>> w(numNodes, {0.0, 0.0});
+      for (size_t sgm = 0; sgm < numSegments; ++sgm) {
+        const size_t a = sgm, b = (sgm + 1) % numNodes;
+        const auto& xa = mesh.coords[curve.nodes[a]];
+        const auto& xb = mesh.coords[curve.nodes[b]];
+        const double length = std::hypot(xb[0] - xa[0], xb[1] - xa[1]);
+        // The material lies on the curve's left: the outward normal is the direction turned right.
+        const std::array<double, 2> normal{(xb[1] - xa[1]) / length, -(xb[0] - xa[0]) / length};
+        integrateSegment(xa, xb, geometry, [&](double Na, double Nb, double ws) {
+          for (int c = 0; c < 2; ++c) {
+            w[a][c] += Na * ws * normal[c];
+            w[b][c] += Nb * ws * normal[c];
+          }
+        });
+      }
+      for (size_t k = 0; k < numNodes; ++k) {
+        const LO n = dofMap.overlapIndex(curve.nodes[k]);
+        if (n < 0 || n >= dofMap.numOwnedNodes()) continue;
+        local += w[k][0] * at(x, dofMap.dof(n, kUx)) + w[k][1] * at(x, dofMap.dof(n, kUy));
+      }
+      values[r.name] = sumOverRanks(comm, local);
     } else if (r.type == "Plastic Power" || r.type == "Stabilization Power" || r.type == "Dead Zone") {
       if (tangent && r.type == "Dead Zone") continue;  // piecewise constant in x: no derivative
       Scalar plastic, stabilization;

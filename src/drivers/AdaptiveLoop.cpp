@@ -33,6 +33,9 @@ std::vector<double> nodalSizes(const Mesh& mesh) {
   return sum;
 }
 
+constexpr double kLocalOrder = 2.0;  ///< s: a node's share of the estimate ∝ h^s (AdaptiveLoop.hpp)
+constexpr double kMinRatio = 0.125, kMaxRatio = 1.5;  ///< h'/h per cycle at most this much finer, coarser
+
 /// The next mesh's nodal sizes from the indicators (AdaptiveLoop.hpp).
 std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::string>& targets, double tolerance,
                               double maxSize, double maxDofs) {
@@ -49,13 +52,30 @@ std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::stri
                          (tolerance * std::max(std::abs(sim.functionals().at(name)), 1e-300) * total);
     for (GO n = 0; n < mesh.numNodes(); ++n) e[n] += scale * shares[n];
   }
-  const double theta = 0.5 / static_cast<double>(mesh.numNodes());
+  // Equidistribution at the least node count: with e_a' = e_a (h_a'/h_a)^s and N' = Σ (h_a/h_a')²,
+  // minimizing N' under Σ e_a' = 1/2 gives h_a'/h_a = (λ/e_a)^(1/(s+2)), λ^(s/(s+2)) = ½ / Σ e_a^(2/(s+2)).
+  const double s = kLocalOrder;
+  double sum = 0.0;
+  for (double v : e) sum += std::pow(v, 2.0 / (s + 2.0));
+  const double lambda = sum > 0.0 ? std::pow(0.5 / sum, (s + 2.0) / s) : 0.0;
+  const double theta = lambda;
   std::vector<double> h = nodalSizes(mesh), next(h.size());
   double predictedNodes = 0.0;
   for (GO n = 0; n < mesh.numNodes(); ++n) {
-    const double ratio = e[n] > 0.0 ? std::clamp(std::sqrt(theta / e[n]), 0.125, 2.0) : 2.0;
+    const double ratio = e[n] > 0.0 ? std::clamp(std::pow(lambda / e[n], 1.0 / (s + 2.0)), kMinRatio, kMaxRatio) : kMaxRatio;
     next[n] = std::min(h[n] * ratio, maxSize);
     predictedNodes += (h[n] / next[n]) * (h[n] / next[n]);
+  }
+  if (getenv("FF_DEBUG_SIZES")) {
+    std::vector<GO> order(mesh.numNodes());
+    for (GO n = 0; n < mesh.numNodes(); ++n) order[n] = n;
+    std::sort(order.begin(), order.end(), [&](GO a, GO b) { return e[a] > e[b]; });
+    double total = 0.0;
+    for (double v : e) total += v;
+    log() << "sizes: total e " << total << ", theta " << theta << "\n";
+    for (int i = 0; i < 12 && i < static_cast<int>(order.size()); ++i)
+      log() << "  node " << order[i] << " at (" << mesh.coords[order[i]][0] << ", " << mesh.coords[order[i]][1]
+            << ") e " << e[order[i]] << " h " << h[order[i]] << " -> " << next[order[i]] << "\n";
   }
   const double dofsPerNode = 3.0;
   if (dofsPerNode * predictedNodes > maxDofs) {

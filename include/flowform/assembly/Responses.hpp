@@ -4,6 +4,8 @@
 //   Mean Pressure   — −Σ R_i·n_i / A over the group: the mean normal pressure the tool applies
 //                     (A its length, or area 2πr ds when axisymmetric)
 //   Boundary Power  — Σ R_i·u_i over the group: the power the tool puts in
+//   Flow Rate       — ∫ u·n dΓ over the group (n outward; 2πr dΓ axisymmetric): the volume
+//                     flux leaving through it (negative where material enters)
 //   Plastic Power   — ∫ s:D dΩ = ∫ 2μ D:D dΩ, the viscoplastic dissipation (≈ ∫ σ̄ e dΩ)
 //   Friction Power  — Σ over active wall nodes of g_k u_t,k, the friction dissipation
 //   Penalty Power   — Σ over active wall nodes of α_n (u·n)², the work of the normal penalty
