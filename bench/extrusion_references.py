@@ -1,70 +1,114 @@
 #!/usr/bin/python3
 """Reference values of the extrusion's ram force F and dF/dnu for the error-estimate
-effectivities (docs/theory.md §7, docs/BENCHMARKS.md §10): Richardson extrapolation on
-strongly corner-graded meshes, independent of the estimator.
+effectivities (docs/theory.md §7, docs/BENCHMARKS.md §10), independent of the estimator.
 
-usage: bench/extrusion_references.py [FLOWFORM] [--levels 0.2:0.008,0.1:0.004,0.05:0.002]
-                                     [--nu 0,0.1,0.3] [--json FILE] [--workdir DIR]
+usage: bench/extrusion_references.py [FLOWFORM] [--families "H:HC,...;H:HC,..."] [--nu 0,0.1,0.3]
+                                     [--scenes plane,axisym] [--json FILE] [--workdir DIR] [--reuse]
+                                     [--from-json FILE] [--effectivity H:HC]
 
-Each scene (plane xml/extrusion.xml, axisymmetric xml/extrusion_axisym.xml) and friction
-coefficient nu (all three walls) runs on meshes (h, hc) halved together (hc = h/25: the die
-corners much finer than the bulk, so the first-order die-lip error and the bulk error fall
-together). From the three values: the observed order q = log2(d1/d2) and the Richardson value
-F_inf = F3 + d2 / (2^q - 1), the same for dF/dnu (DDM). The spread between that and the
-Richardson value with q = 1 (the die lip's order) is printed as the reference's uncertainty.
+The error of the ram force has two parts with different orders (docs/extrusion_verification.md
+§3): the die-lip leak, first order in the corner size hc, and the bulk error, second order in
+the bulk size h. One family of meshes with hc/h fixed mixes them (the graded family hc = h/25
+even converges non-monotonically: the two parts have opposite signs), so one-parameter
+Richardson extrapolation is unreliable. Instead each scene and friction coefficient nu runs on
+two families (default: hc = h/4 and hc = h/25, h = 0.2, 0.1, 0.05) and the six values are fitted
+by least squares to
+        F(h, hc) = F_inf + a hc + b h²,
+the reference is F_inf and its uncertainty the largest fit residual (the mesh-to-mesh noise of
+the contact pattern, which no extrapolation removes). The same for dF/dnu (DDM).
+
+--effectivity H:HC then runs each scene on that mesh with the two-level estimate and prints
+eta / (ref - value) for F and dF/dnu, with the reference's uncertainty in units of the true
+error ('noise': near 1 or above, the effectivity says nothing). --from-json reuses references.
 """
 import argparse
 import json
-import math
 import os
 import sys
 
+import numpy as np
+
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 from flowform_tools import launcher, summary  # noqa: E402
-from flowform_tools.numerics import observed_order, richardson  # noqa: E402
 
 WALLS = ("container", "die_face", "die_land")
+CASES = {"plane": "xml/extrusion.xml", "axisym": "xml/extrusion_axisym.xml"}
+
+
+def run_case(a, root, scene, nu, h, hc, extra, name):
+    out = os.path.join(a.workdir, name)
+    s = summary.load(out) if a.reuse else None
+    if not s or s.get("exit_status") != 0:
+        sets = [f"Mesh/Geo Parameters/h={h}", f"Mesh/Geo Parameters/hc={hc}",
+                "Sensitivity/Parameters={Friction Coefficient}"] + extra
+        sets += [f"Boundary Conditions/{w}/Friction Coefficient={nu}" for w in WALLS]
+        run = launcher.run(a.flowform, os.path.join(root, CASES[scene]), out, sets, quiet=True, clean=True)
+        if run.status != 0:
+            print(f"{name}: exit {run.status}", file=sys.stderr)
+        s = summary.load(out) or {}
+    return s
+
+
+def fit(points):
+    """Least squares F = F_inf + a hc + b h² over (h, hc, F); returns F_inf, a, b, max |residual|."""
+    A = np.array([[1.0, hc, h * h] for h, hc, _ in points])
+    b = np.array([v for _, _, v in points])
+    x, *_ = np.linalg.lstsq(A, b, rcond=None)
+    return float(x[0]), float(x[1]), float(x[2]), float(np.max(np.abs(b - A @ x)))
 
 
 def main():
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     ap = argparse.ArgumentParser()
     ap.add_argument("flowform", nargs="?", default=os.path.join(root, "build/flowform"))
-    ap.add_argument("--levels", default="0.2:0.008,0.1:0.004,0.05:0.002")
+    ap.add_argument("--families", default="0.2:0.05,0.1:0.025,0.05:0.0125;0.2:0.008,0.1:0.004,0.05:0.002")
     ap.add_argument("--nu", default="0,0.1,0.3")
     ap.add_argument("--scenes", default="plane,axisym")
     ap.add_argument("--json")
     ap.add_argument("--workdir", default="/tmp/flowform_references")
+    ap.add_argument("--reuse", action="store_true", help="keep runs whose summary.json says exit 0")
+    ap.add_argument("--from-json")
+    ap.add_argument("--effectivity")
     a = ap.parse_args()
-    cases = {"plane": "xml/extrusion.xml", "axisym": "xml/extrusion_axisym.xml"}
-    levels = [tuple(p.split(":")) for p in a.levels.split(",")]
+    meshes = [tuple(float(v) for v in p.split(":")) for fam in a.families.split(";") for p in fam.split(",")]
     results = {}
-    for scene in a.scenes.split(","):
+    if a.from_json:
+        with open(a.from_json) as f:
+            results = json.load(f)
+    for scene in ([] if a.from_json else a.scenes.split(",")):
         for nu in a.nu.split(","):
-            values, derivs, dofs = [], [], []
-            for h, hc in levels:
-                out = os.path.join(a.workdir, f"{scene}_nu{nu}_h{h}_hc{hc}")
-                sets = [f"Mesh/Geo Parameters/h={h}", f"Mesh/Geo Parameters/hc={hc}",
-                        "Sensitivity/Parameters={Friction Coefficient}"]
-                sets += [f"Boundary Conditions/{w}/Friction Coefficient={nu}" for w in WALLS]
-                run = launcher.run(a.flowform, os.path.join(root, cases[scene]), out, sets, quiet=True, clean=True)
-                s = summary.load(out) or {}
-                if run.status != 0:
-                    print(f"{scene} nu={nu} h={h} hc={hc}: exit {run.status}", file=sys.stderr)
-                values.append(s["functionals"]["ram_force"])
-                derivs.append(s["sensitivities"]["ram_force"]["Friction Coefficient"])
+            F, D, dofs = [], [], []
+            for h, hc in meshes:
+                s = run_case(a, root, scene, nu, h, hc, [], f"{scene}_nu{nu}_h{h}_hc{hc}")
+                F.append((h, hc, s["functionals"]["ram_force"]))
+                D.append((h, hc, s["sensitivities"]["ram_force"]["Friction Coefficient"]))
                 dofs.append(s["dofs"])
-            entry = {"dofs": dofs, "F": values, "dFdnu": derivs}
-            for key, seq in (("F", values), ("dFdnu", derivs)):
-                q = observed_order(seq)[-1]
-                entry[key + "_order"] = q
-                entry[key + "_ref"] = richardson(seq, q) if math.isfinite(q) and q > 0.2 else richardson(seq, 1.0)
-                entry[key + "_spread"] = abs(richardson(seq, 1.0) - entry[key + "_ref"])
+            entry = {"meshes": meshes, "dofs": dofs, "F": [v for *_, v in F], "dFdnu": [v for *_, v in D]}
+            for key, pts in (("F", F), ("dFdnu", D)):
+                ref, ca, cb, noise = fit(pts)
+                entry.update({key + "_ref": ref, key + "_a": ca, key + "_b": cb, key + "_noise": noise})
             results[f"{scene} nu={nu}"] = entry
-            print(f"{scene:6} nu={nu:4} dofs {dofs}  F {['%.6f' % v for v in values]} q={entry['F_order']:.2f} "
-                  f"F_ref={entry['F_ref']:.5f} (+-{entry['F_spread']:.1e})  dF/dnu {['%.5f' % v for v in derivs]} "
-                  f"q={entry['dFdnu_order']:.2f} ref={entry['dFdnu_ref']:.4f} (+-{entry['dFdnu_spread']:.1e})",
-                  flush=True)
+            print(f"{scene:6} nu={nu:4} F_ref {entry['F_ref']:.5f} +- {entry['F_noise']:.1e} "
+                  f"(a {entry['F_a']:+.3g}, b {entry['F_b']:+.3g})  dF/dnu_ref {entry['dFdnu_ref']:.4f} "
+                  f"+- {entry['dFdnu_noise']:.1e} (a {entry['dFdnu_a']:+.3g}, b {entry['dFdnu_b']:+.3g})", flush=True)
+            print(f"       F {['%.6f' % v for v in entry['F']]}  dF/dnu {['%.5f' % v for v in entry['dFdnu']]}")
+    if a.effectivity:
+        h, hc = (float(v) for v in a.effectivity.split(":"))
+        print(f"\neffectivity eta / (ref - value) on (h, hc) = ({h}, {hc}); noise = reference uncertainty / |true|")
+        for key, entry in results.items():
+            scene, nu = key.split(" nu=")
+            s = run_case(a, root, scene, nu, h, hc, ["Error Estimation/Method=Two-Level"],
+                         f"estimate_{scene}_nu{nu}_h{h}_hc{hc}")
+            line = f"{scene:6} nu={nu:4}"
+            for label, value, eta, ref_key in (
+                    ("F", s["functionals"]["ram_force"], s["functionals_error_estimate"]["ram_force"], "F"),
+                    ("dF/dnu", s["sensitivities"]["ram_force"]["Friction Coefficient"],
+                     s["sensitivities_error_estimate"]["ram_force"]["Friction Coefficient"], "dFdnu")):
+                true = entry[ref_key + "_ref"] - value
+                entry.setdefault("estimate", {})[ref_key] = {"value": value, "eta": eta, "true": true}
+                line += (f"  {label} {value:.5g} eta {eta:+.3e} true {true:+.3e} eff {eta / true:5.2f} "
+                         f"noise {entry[ref_key + '_noise'] / abs(true):.2f}")
+            print(line, flush=True)
     if a.json:
         with open(a.json, "w") as f:
             json.dump(results, f, indent=1)

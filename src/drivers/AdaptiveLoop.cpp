@@ -58,24 +58,12 @@ std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::stri
   double sum = 0.0;
   for (double v : e) sum += std::pow(v, 2.0 / (s + 2.0));
   const double lambda = sum > 0.0 ? std::pow(0.5 / sum, (s + 2.0) / s) : 0.0;
-  const double theta = lambda;
   std::vector<double> h = nodalSizes(mesh), next(h.size());
   double predictedNodes = 0.0;
   for (GO n = 0; n < mesh.numNodes(); ++n) {
     const double ratio = e[n] > 0.0 ? std::clamp(std::pow(lambda / e[n], 1.0 / (s + 2.0)), kMinRatio, kMaxRatio) : kMaxRatio;
     next[n] = std::min(h[n] * ratio, maxSize);
     predictedNodes += (h[n] / next[n]) * (h[n] / next[n]);
-  }
-  if (getenv("FF_DEBUG_SIZES")) {
-    std::vector<GO> order(mesh.numNodes());
-    for (GO n = 0; n < mesh.numNodes(); ++n) order[n] = n;
-    std::sort(order.begin(), order.end(), [&](GO a, GO b) { return e[a] > e[b]; });
-    double total = 0.0;
-    for (double v : e) total += v;
-    log() << "sizes: total e " << total << ", theta " << theta << "\n";
-    for (int i = 0; i < 12 && i < static_cast<int>(order.size()); ++i)
-      log() << "  node " << order[i] << " at (" << mesh.coords[order[i]][0] << ", " << mesh.coords[order[i]][1]
-            << ") e " << e[order[i]] << " h " << h[order[i]] << " -> " << next[order[i]] << "\n";
   }
   const double dofsPerNode = 3.0;
   if (dofsPerNode * predictedNodes > maxDofs) {
@@ -96,6 +84,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
   const int maxCycles = adaptivity.get<int>("Maximum Cycles");
   const double maxDofs = adaptivity.get<int>("Maximum Dofs");
 
+  const auto loopStart = std::chrono::steady_clock::now();
   nlohmann::json cycles = nlohmann::json::array();
   std::unique_ptr<Simulation> sim, previous;
   SizeField field;
@@ -153,7 +142,10 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
     field = sizeFieldOnMesh(sim->mesh(), nextSizes(*sim, targets, tolerance, maxSize, maxDofs));
     previous = std::move(sim);
   }
-  nlohmann::json block = {{"cycles", cycles}, {"target_met", met}, {"target_relative_error", tolerance}};
+  nlohmann::json block = {{"cycles", cycles},
+                          {"target_met", met},
+                          {"target_relative_error", tolerance},
+                          {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count()}};
   if (!met) {
     block["message"] = why;
     sim->setNotMet(why);

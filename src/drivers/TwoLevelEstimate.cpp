@@ -17,18 +17,18 @@ namespace flowform {
 namespace {
 
 /// Nodal shares of the localized estimate on the coarse mesh (TwoLevelEstimate.hpp):
-/// e_i = |Σ_fields R_f,i (z_f − I_h z_f)_i| at each refined node i, spread over the coarse
+/// e_i = |Σ_fields R_f,i (ζ_f − I_h ζ_f)_i| at each refined node i, spread over the coarse
 /// cell that holds node i by its shape functions there. Replicated on every rank.
 std::vector<double> coarseIndicator(const Simulation& coarse, const Simulation& fine, const Vector& residual,
-                                    const Vector& z) {
+                                    const Vector& zeta) {
   const DofMap& fineDofs = fine.dofMap();
   const DofMap& coarseDofs = coarse.dofMap();
-  // I_h z_f: the adjoint at the coarse nodes (which are refined nodes), interpolated back.
+  // I_h ζ_f: the adjoint at the coarse nodes (which are refined nodes), interpolated back.
   Vector zCoarse(coarseDofs.ownedMap()), zInterpolant(fineDofs.ownedMap());
-  interpolate(fine.mesh(), fineDofs, replicate(z, fineDofs), coarse.mesh(), coarseDofs, zCoarse);
+  interpolate(fine.mesh(), fineDofs, replicate(zeta, fineDofs), coarse.mesh(), coarseDofs, zCoarse);
   interpolate(coarse.mesh(), coarseDofs, replicate(zCoarse, coarseDofs), fine.mesh(), fineDofs, zInterpolant);
   const auto r = residual.getLocalViewHost(Tpetra::Access::ReadOnly);
-  const auto zf = z.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto zf = zeta.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto zi = zInterpolant.getLocalViewHost(Tpetra::Access::ReadOnly);
   const PointLocator locator(coarse.mesh());
   const int npc = nodesPerCell(coarse.mesh().cellType);
@@ -68,14 +68,15 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
   estimate.refinedDofs = static_cast<GO>(fine.dofMap().numGlobalDofs());
 
   // Indicators: the refined residual at I u_h (statuses as carried over) weighted by the
-  // refined adjoint there. Measured alternatives (docs/theory.md §7): ζ = c − z as the weight,
-  // and the statuses the refined solve converges to; both sized worse meshes.
+  // refined adjoint there (ζ = c − z). Measured alternatives (docs/theory.md §7): z itself (its
+  // layer at the response's group refines there for nothing), and the statuses the refined
+  // solve converges to (everything goes to the die lip, the bulk stays coarse).
   if (!indicatorResponses.empty()) {
-    Vector residual(fine.dofMap().ownedMap()), z(fine.dofMap().ownedMap());
+    Vector residual(fine.dofMap().ownedMap()), zeta(fine.dofMap().ownedMap());
     fine.model().residual(fine.solution(), residual);
     for (const std::string& name : indicatorResponses)
-      if (responseAdjoint(fine.model(), fine.solution(), fine.responses(), name, fine.mesh(), z))
-        estimate.indicators[name] = coarseIndicator(coarse, fine, residual, z);
+      if (responseAdjoint(fine.model(), fine.solution(), fine.responses(), name, fine.mesh(), zeta))
+        estimate.indicators[name] = coarseIndicator(coarse, fine, residual, zeta);
   }
   fine.run();
   const double factor = 1.0 / (1.0 - std::pow(2.0, -estimate.order));

@@ -6,14 +6,16 @@
 // every target has |η|/|φ| ≤ Target Relative Error, else size mesh k+1 from the indicators and
 // let gmsh mesh the .geo anew with that size field (curves and physical groups exact).
 //
-// Sizing (error equidistribution). With e_a = Σ_targets (nodal share of |η_φ|)/(tol |φ|) at
-// node a of mesh k (so Σ_a e_a ≈ Σ_targets |η_φ|/(tol |φ|)), N the node count and h_a the mean
-// length of the edges at a, each node is asked to carry θ = 1/(2N) after the remesh:
-//     h_a' = h_a · clamp((θ / e_a)^(1/2), 1/8, 2),
-// the square root because a node's share falls at least like its area (h²) where the solution is
-// smooth and like h at a singular corner; the clamp keeps one cycle from over-refining or
-// coarsening more than a factor 2. h_a' is capped by the largest size of the first mesh, and
-// scaled up uniformly when the predicted dof count Σ_a 3 (h_a/h_a')² exceeds Maximum Dofs.
+// Sizing (error equidistribution at the least node count). With e_a = Σ_targets (nodal share
+// of |η_φ|)/(tol |φ|) at node a of mesh k (so Σ_a e_a ≈ Σ_targets |η_φ|/(tol |φ|)), h_a the mean
+// length of the edges at a, and a node's share modelled as e_a' = e_a (h_a'/h_a)^s, the sizes
+// that reach Σ_a e_a' = 1/2 (half the tolerance: the estimate's own uncertainty) with the fewest
+// nodes N' = Σ_a (h_a/h_a')² are
+//     h_a'/h_a = (λ/e_a)^(1/(s+2)),   λ^(s/(s+2)) = ½ / Σ_a e_a^(2/(s+2)),
+// with s = 2 (a share falls like its area where the solution is smooth, more slowly at a
+// singular corner, which the next cycles then refine further), clamped to [1/8, 3/2] per
+// cycle. h_a' is capped by the largest size of the first mesh, and scaled up uniformly when
+// the predicted dof count Σ_a 3 (h_a/h_a')² exceeds Maximum Dofs.
 #pragma once
 
 #include <string>

@@ -55,12 +55,6 @@ class Simulation {
   /// `other`'s solution interpolated at this mesh's nodes, the constraints imposed, into `x`.
   void interpolateFrom(const Simulation& other, Vector& x) const;
 
-  /// One full Newton step with the exact tangent from the current state, the statuses held:
-  /// the linearized solve of this mesh's problem. The responses are evaluated at the result,
-  /// and the DDM sensitivities when the case asks for them (no finite-difference check).
-  /// The two-level error estimate takes it on the refined mesh (drivers/TwoLevelEstimate).
-  void newtonStep();
-
   /// Moves the mesh nodes to `coords` (same topology; every cell must stay positively
   /// oriented, else InputError naming the cell) and refreshes what caches geometry: the
   /// walls' curves and corners, the symmetry directions; the factors are dropped. The

@@ -2,11 +2,10 @@
 //
 // The mesh is refined once uniformly (every cell split in four, the .geo's curves kept); the
 // converged solution u_h is interpolated on it (exactly: P1/Q1 fields are nested) with the
-// contact statuses carried over, and one Newton step with the exact tangent K_f of the
-// refined problem is taken:  u_f = I u_h − K_f⁻¹ R_f(I u_h). That step is the linearized
-// solve on the refined mesh, so for every response φ
+// contact statuses carried over, and the refined problem is solved from there (Newton at the
+// target, then the contact-status loop; no continuation): u_f. For every response φ
 //
-//     φ_f − φ_h = φ(u_f) − φ(u_h) ≈ φ(u_{h/2}) − φ(u_h)         (to O(|u_f − u_{h/2}|²)),
+//     φ_f − φ_h = φ(u_f) − φ(u_h),
 //
 // and with an error that falls like h^p under uniform refinement,
 //
@@ -15,14 +14,18 @@
 // p is the case's Error Estimation/Order (default 1: the die-lip corner of the extrusion makes
 // the ram force first order in the corner size; on a smooth problem of order 2 the default
 // over-estimates by 1.5 at most). The sensitivities get the same: dφ/dh by DDM at u_f on the
-// refined mesh (one more factorization there), η = (dφ_f/dh − dφ_h/dh) / (1 − 2^(−p)).
+// refined mesh (one more factorization and back-substitution there),
+// η = (dφ_f/dh − dφ_h/dh) / (1 − 2^(−p)).
 //
-// This is the dual-weighted residual with the adjoint solved on the refined space: with
-// K_fᵀ z_f = ∂φ_f/∂q (the transposed factors of the same K_f), φ'(u_f − I u_h) = −z_fᵀ R_f(I u_h).
-// Localized, −Σ_i R_f,i (z_f − I_h z_f)_i over the refined mesh's nodes i (I_h z_f the coarse
-// interpolant, zero at the coarse nodes' own) gives each node's share; shared among the coarse
-// cell's nodes by the shape functions, it is the nodal indicator the adaptive loop sizes the
-// next mesh from. Only for responses linear in the reactions (Boundary Force, Mean Pressure).
+// The indicators are the dual-weighted residual with the adjoint solved on the refined space:
+// with K_fᵀ z_f = ∂φ_f/∂q (the transposed factors of the exact K_f at I u_h), the linearized
+// change is φ'(δu) = −z_fᵀ R_f(I u_h). (As an estimate this linearization fails on the
+// extrusion: the refined solve changes contact statuses; docs/theory.md §7.)
+// Localized with ζ_f = c − z_f (the adjoint carrying the response's Dirichlet data, smooth at the
+// response's group; estimation/ResponseAdjoint.hpp): Σ_i R_f,i (ζ_f − I_h ζ_f)_i over the refined
+// mesh's nodes i (I_h ζ_f the coarse interpolant, equal to ζ_f at the coarse nodes) gives each
+// node's share; shared among the coarse cell's nodes by the shape functions, it is the nodal
+// indicator the adaptive loop sizes the next mesh from. Only for responses linear in the reactions (Boundary Force, Mean Pressure).
 #pragma once
 
 #include <map>
