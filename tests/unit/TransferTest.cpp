@@ -1,0 +1,144 @@
+// Carrying a state from one mesh to another (mesh/PointLocator, discretization/SolutionTransfer,
+// ContactWall::takeStatusesFrom), what the two-level error estimate and the adaptive loop
+// start their solves from:
+// - a linear field is reproduced exactly (to round-off, 1e-12) at any point inside a distorted
+//   mesh, by P1 triangles and by Q1 quadrilaterals (both contain the linear functions);
+// - a point just outside the mesh is clamped to the nearest cell and flagged;
+// - a P1/Q1 field of arbitrary nodal values on a coarse mesh, interpolated onto the uniformly
+//   refined mesh, keeps its values at the coarse nodes and takes the edge averages at the
+//   midpoints (nested spaces: exact), on 1 and 2 ranks (replicate is collective);
+// - wall statuses carried to a refined wall: coarse nodes keep theirs, a midpoint is active
+//   only between two active nodes.
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_UnitTestHarness.hpp>
+#include <cmath>
+
+#include "StructuredMesh.hpp"
+#include "flowform/contact/ContactWall.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/discretization/SolutionTransfer.hpp"
+#include "flowform/mesh/PointLocator.hpp"
+
+namespace {
+
+using namespace flowform;
+
+/// A smooth distortion of [0, 2] × [0, 1] that keeps the boundary lines straight.
+std::array<double, 2> distort(double x, double y) {
+  return {x + 0.05 * std::sin(M_PI * x) * std::sin(M_PI * y), y + 0.04 * std::sin(M_PI * x / 2) * std::sin(M_PI * y)};
+}
+
+Mesh distorted(CellType type, int nx, int ny) {
+  return test::structuredMesh(type, nx, ny, "distorted", [&](int i, int j) {
+    return distort(2.0 * i / nx, 1.0 * j / ny);
+  });
+}
+
+double linear(const std::array<double, 2>& p) { return 1.0 + 2.0 * p[0] - 3.0 * p[1]; }
+
+/// A nodal value with no pattern (not a polynomial).
+double scrambled(GO node, int field) { return std::sin(1.7 * node + 0.3 * field) + 0.1 * field; }
+
+TEUCHOS_UNIT_TEST(Transfer, LinearFieldsAreReproducedInsideAndClampedOutside) {
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4}) {
+    const Mesh mesh = distorted(type, 7, 5);
+    const PointLocator locator(mesh);
+    const int npc = nodesPerCell(type);
+    for (int k = 0; k < 200; ++k) {
+      // Points spread over the (straight-sided) domain [0, 2] × [0, 1].
+      const std::array<double, 2> p{2.0 * std::fmod(0.618034 * k + 0.05, 1.0), std::fmod(0.414214 * k + 0.02, 1.0)};
+      const CellPoint at = locator.locate(p);
+      TEST_ASSERT(at.inside);
+      double v = 0.0, sum = 0.0;
+      for (int a = 0; a < npc; ++a) {
+        v += at.weights[a] * linear(mesh.coords[mesh.cell(at.cell)[a]]);
+        sum += at.weights[a];
+      }
+      TEST_FLOATING_EQUALITY(sum, 1.0, 1e-12);
+      TEST_FLOATING_EQUALITY(v, linear(p), 1e-12);
+    }
+    const CellPoint outside = locator.locate({-1e-3, 0.5});
+    TEST_ASSERT(!outside.inside);
+    TEST_ASSERT(outside.cell >= 0);
+    for (int a = 0; a < npc; ++a) TEST_ASSERT(outside.weights[a] >= 0.0 && outside.weights[a] <= 1.0);
+  }
+}
+
+TEUCHOS_UNIT_TEST(Transfer, NestedRefinementCarriesAFieldExactly) {
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4}) {
+    // The refined structured mesh is nested in the coarse one: fine node (2i, 2j) is coarse
+    // node (i, j); straight cells are split at their edge midpoints (same diagonals for
+    // triangles: fine cell (2i.., 2j..) has the coarse cell's diagonal when (i + j) and
+    // (2i + 2j) have the same parity, which holds for the diagonal's own pair of fine cells).
+    const int nx = 4, ny = 2;
+    const Mesh coarse = test::structuredMesh(type, nx, ny, "coarse", [&](int i, int j) {
+      return std::array<double, 2>{0.5 * i, 0.5 * j};
+    });
+    const Mesh fine = test::structuredMesh(type, 2 * nx, 2 * ny, "fine", [&](int i, int j) {
+      return std::array<double, 2>{0.25 * i, 0.25 * j};
+    });
+    const DofMap coarseDofs(coarse, comm, {}), fineDofs(fine, comm, {});
+    Vector x(coarseDofs.ownedMap()), y(fineDofs.ownedMap());
+    {
+      auto v = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (LO n = 0; n < coarseDofs.numOwnedNodes(); ++n)
+        for (int f = 0; f < 3; ++f) v(coarseDofs.dof(n, f), 0) = scrambled(coarseDofs.overlapNodes()[n], f);
+    }
+    const std::vector<double> all = replicate(x, coarseDofs);
+    TEST_EQUALITY(static_cast<GO>(all.size()), coarseDofs.numGlobalDofs());
+    interpolate(coarse, coarseDofs, all, fine, fineDofs, y);
+    const auto v = y.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (LO n = 0; n < fineDofs.numOwnedNodes(); ++n) {
+      const GO node = fineDofs.overlapNodes()[n];
+      const int i = static_cast<int>(node % (2 * nx + 1)), j = static_cast<int>(node / (2 * nx + 1));
+      auto coarseNode = [&](int ci, int cj) { return static_cast<GO>(cj * (nx + 1) + ci); };
+      for (int f = 0; f < 3; ++f) {
+        double expected;
+        if (i % 2 == 0 && j % 2 == 0)
+          expected = scrambled(coarseNode(i / 2, j / 2), f);
+        else if (j % 2 == 0)
+          expected = 0.5 * (scrambled(coarseNode(i / 2, j / 2), f) + scrambled(coarseNode(i / 2 + 1, j / 2), f));
+        else if (i % 2 == 0)
+          expected = 0.5 * (scrambled(coarseNode(i / 2, j / 2), f) + scrambled(coarseNode(i / 2, j / 2 + 1), f));
+        else if (type == CellType::Quadrilateral4)  // the cell centre: the mean of the four corners
+          expected = 0.25 * (scrambled(coarseNode(i / 2, j / 2), f) + scrambled(coarseNode(i / 2 + 1, j / 2), f) +
+                             scrambled(coarseNode(i / 2 + 1, j / 2 + 1), f) + scrambled(coarseNode(i / 2, j / 2 + 1), f));
+        else {  // the midpoint of the coarse cell's diagonal
+          const bool rising = (i / 2 + j / 2) % 2 == 0;  // diagonal a–c, else b–d (StructuredMesh.hpp)
+          expected = rising ? 0.5 * (scrambled(coarseNode(i / 2, j / 2), f) + scrambled(coarseNode(i / 2 + 1, j / 2 + 1), f))
+                            : 0.5 * (scrambled(coarseNode(i / 2 + 1, j / 2), f) + scrambled(coarseNode(i / 2, j / 2 + 1), f));
+        }
+        TEST_FLOATING_EQUALITY(v(fineDofs.dof(n, f), 0), expected, 1e-12);
+      }
+    }
+  }
+}
+
+TEUCHOS_UNIT_TEST(Transfer, WallStatusesCarryToARefinedWall) {
+  const Mesh coarse = test::structuredMesh(CellType::Triangle3, 4, 2, "coarse", [](int i, int j) {
+    return std::array<double, 2>{0.5 * i, 0.5 * j};
+  });
+  const Mesh fine = test::structuredMesh(CellType::Triangle3, 8, 4, "fine", [](int i, int j) {
+    return std::array<double, 2>{0.25 * i, 0.25 * j};
+  });
+  Teuchos::ParameterList params;
+  params.set("Friction Law", "Coulomb");
+  params.set("Friction Coefficient", 0.1);
+  ContactWall from("top", params, coarse, Geometry::PlaneStrain);
+  ContactWall to("top", params, fine, Geometry::PlaneStrain);
+  // The top curve runs from x = 2 to x = 0 (material on its left).
+  TEST_EQUALITY(from.numNodes(), 5);
+  const bool statuses[5] = {true, true, false, false, true};
+  for (int k = 0; k < 5; ++k)
+    if (from.isActive(k) != statuses[k]) from.setActive(k, statuses[k]);
+  to.takeStatusesFrom(from);
+  TEST_EQUALITY(to.numNodes(), 9);
+  for (int k = 0; k < 9; ++k) {
+    const bool expected = k % 2 == 0 ? statuses[k / 2] : statuses[k / 2] && statuses[k / 2 + 1];
+    TEST_EQUALITY(to.isActive(k), expected);
+    TEST_EQUALITY(to.changes(k), 0);
+  }
+}
+
+}  // namespace
