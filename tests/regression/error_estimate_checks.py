@@ -15,14 +15,15 @@ usage: error_estimate_checks.py FLOWFORM SOURCE_DIR WORKDIR
    Newtonian on N = 8 and n = 3 on N = 8, eta / (Q - Q_h) in [0.5, 2] (measured 1.01 and 0.99).
 3. Effectivity on the extrusion (xml/extrusion.xml, default mesh (0.1, 0.025)): eta / (F_ref - F)
    in [0.5, 2] (the issue's goal), F_ref fitted to F_inf + a hc + b h² over two mesh families
-   (bench/extrusion_references.py; docs/BENCHMARKS.md §10) with an uncertainty of at most 2 %
-   of the true errors here: plane nu = 0 (measured 0.95), nu = 0.1 (0.91), axisymmetric
-   nu = 0.1 (0.94); dF/dnu at plane nu = 0 (0.97). The cases where the reference is too
-   uncertain or the estimate fails (plane nu = 0.3: 0.60; axisymmetric nu = 0, 0.3) are
-   reported in docs/theory.md §7, not asserted.
+   (bench/extrusion_references.py; docs/BENCHMARKS.md §10) with an uncertainty of at most 4 %
+   of the true errors here: plane nu = 0 (measured 0.95), nu = 0.1 (0.92), axisymmetric
+   nu = 0 (0.96), nu = 0.1 (0.95); dF/dnu at nu = 0, plane (0.96) and axisymmetric (0.99).
+   The cases where the reference is too uncertain or the estimate fails (docs/theory.md §7:
+   plane nu = 0.3, 0.66; axisymmetric nu = 0.3, -0.44; dF/dnu at nu = 0.1 and 0.3) are reported,
+   not asserted.
 4. Adaptivity: the default plane extrusion with a 0.5 % target on the ram force meets it as
    estimated (exit 0), lists every cycle, and its true error against F_ref is at most twice the
-   target (effectivity >= 0.5; measured 0.53 %).
+   target (effectivity >= 0.5; measured 0.49 %).
 5. Bad input: an Adaptivity response that has no indicator (Dead Zone) exits 2, nothing written.
 """
 import os
@@ -32,8 +33,9 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
 from flowform_tools import launcher, summary  # noqa: E402
 
 # (scene, nu) -> (F_ref, dF/dnu_ref or None): docs/BENCHMARKS.md §10.
-REFERENCE = {("xml/extrusion.xml", "0.0"): (3.30663, 4.4505), ("xml/extrusion.xml", "0.1"): (3.73638, None),
-             ("xml/extrusion_axisym.xml", "0.1"): (23.12332, None)}
+REFERENCE = {("xml/extrusion.xml", "0.0"): (3.30663, 4.4505), ("xml/extrusion.xml", "0.1"): (3.73469, None),
+             ("xml/extrusion_axisym.xml", "0.0"): (18.22393, 52.4114),
+             ("xml/extrusion_axisym.xml", "0.1"): (23.11832, None)}
 WALLS = ("container", "die_face", "die_land")
 
 
