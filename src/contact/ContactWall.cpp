@@ -156,17 +156,15 @@ std::vector<ContactWall> contactWallsFromCase(const Teuchos::ParameterList& bcLi
   return walls;
 }
 
-void ContactWall::takeStatusesFrom(const ContactWall& other) {
+void ContactWall::takeStatusesFrom(const ContactWall& other, const std::vector<std::array<double, 2>>* u,
+                                   double penetrationTolerance) {
   for (int k = 0; k < numNodes(); ++k) {
     const auto& x = m_coords[k];
     double bestDistance = std::numeric_limits<double>::max();
-    bool active = other.isActive(0);
+    bool active = other.isActive(0), zoneLimit = false;
     for (int a = 0; a < other.numNodes(); ++a) {
       const int b = other.next(a);
-      if (b < 0) {
-        if (other.numNodes() == 1) active = other.isActive(0);
-        continue;
-      }
+      if (b < 0) continue;
       // Nearest point of segment a–b: parameter t of the projection, clamped to [0, 1].
       const auto& xa = other.nodeCoordinates(a);
       const auto& xb = other.nodeCoordinates(b);
@@ -181,7 +179,15 @@ void ContactWall::takeStatusesFrom(const ContactWall& other) {
           active = other.isActive(a) && other.isActive(b);
         else
           active = t < 0.5 ? other.isActive(a) : other.isActive(b);
+        zoneLimit = other.isActive(a) != other.isActive(b) && t > 1e-6 && t < 1.0 - 1e-6;
       }
+    }
+    if (zoneLimit && u) {
+      const auto& v = (*u)[k];
+      const auto& n = m_curve.normals[k];
+      active = v[0] * n[0] + v[1] * n[1] > penetrationTolerance;
+      for (const auto& corner : m_cornerNormals[k])
+        active = active && v[0] * corner[0] + v[1] * corner[1] > penetrationTolerance;
     }
     m_active[k] = active;
   }

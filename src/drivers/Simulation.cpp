@@ -162,9 +162,16 @@ void Simulation::interpolateFrom(const Simulation& other, Vector& x) const {
 
 void Simulation::startFrom(const Simulation& other) {
   interpolateFrom(other, *m_solution);
+  // Statuses carried over; a node inside an old zone limit is decided by whether it penetrates.
+  const double penetrationTolerance = m_params.sublist("Contact").get<double>("Penetration Tolerance");
+  std::vector<double> p;
+  std::vector<std::array<double, 2>> u;
   for (ContactWall& wall : m_walls)
     for (const ContactWall& from : other.contactWalls())
-      if (from.name() == wall.name()) wall.takeStatusesFrom(from);
+      if (from.name() == wall.name()) {
+        wallValues(wall, *m_dofMap, *m_solution, p, u);
+        wall.takeStatusesFrom(from, &u, penetrationTolerance);
+      }
   if (!m_walls.empty()) updateWallScales(*m_solution);
   m_warmStart = true;
 }

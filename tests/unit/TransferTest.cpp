@@ -8,7 +8,8 @@
 //   refined mesh, keeps its values at the coarse nodes and takes the edge averages at the
 //   midpoints (nested spaces: exact), on 1 and 2 ranks (replicate is collective);
 // - wall statuses carried to a refined wall: coarse nodes keep theirs, a midpoint is active
-//   only between two active nodes.
+//   only between two active nodes, or, given the velocities, inside a zone limit when it
+//   penetrates.
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
 #include <cmath>
@@ -139,6 +140,21 @@ TEUCHOS_UNIT_TEST(Transfer, WallStatusesCarryToARefinedWall) {
     TEST_EQUALITY(to.isActive(k), expected);
     TEST_EQUALITY(to.changes(k), 0);
   }
+  // With the carried-over velocities, a node inside a zone limit (k = 3: between active and
+  // free; k = 7: between free and active) is active iff it moves into the tool (u·n > 1e-4,
+  // n = +y on the top wall); k = 5 lies between two free nodes and stays free however it moves.
+  std::vector<std::array<double, 2>> u(9, {0.0, 0.0});
+  u[3] = {0.3, 1e-3};
+  u[5] = {0.0, 1.0};
+  u[7] = {0.0, -1.0};
+  to.takeStatusesFrom(from, &u, 1e-4);
+  for (int k = 0; k < 9; ++k) {
+    const bool expected = k == 3 ? true : k == 7 ? false : k % 2 == 0 ? statuses[k / 2] : statuses[k / 2] && statuses[k / 2 + 1];
+    TEST_EQUALITY(to.isActive(k), expected);
+  }
+  u[3] = {0.3, 1e-5};  // below the tolerance: free
+  to.takeStatusesFrom(from, &u, 1e-4);
+  TEST_ASSERT(!to.isActive(3));
 }
 
 }  // namespace

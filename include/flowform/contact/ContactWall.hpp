@@ -117,9 +117,14 @@ class ContactWall {
 
   /// The statuses of `other` (the same wall on another mesh) carried to this wall's nodes:
   /// each node takes the status of the nearest point of `other`'s polyline (the nearer end of
-  /// that segment; a node at a segment's midpoint is active only when both ends are). The
-  /// change counts start again from zero. For starting a solve on a new mesh from a converged one.
-  void takeStatusesFrom(const ContactWall& other);
+  /// that segment; a node at a segment's midpoint is active only when both ends are). With `u`
+  /// (this wall's nodal velocities at the carried-over state), a node inside a segment whose
+  /// ends differ — the limit of the contact zone — is decided by the activation criterion
+  /// instead: active if it moves into the tool (u·n > penetrationTolerance, for every normal at a
+  /// convex tool corner). The change counts start again from zero. For starting a solve on a
+  /// new mesh from a converged one.
+  void takeStatusesFrom(const ContactWall& other, const std::vector<std::array<double, 2>>* u = nullptr,
+                        double penetrationTolerance = 0.0);
   /// Per wall node: viscosity μ and flow stress σ̄ (largest over the adjacent cells).
   void setScales(std::vector<double> viscosity, std::vector<double> flowStress);
   void setFrictionCoefficient(double nu) { m_settings.frictionCoefficient = nu; }
