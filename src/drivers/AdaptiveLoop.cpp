@@ -35,10 +35,13 @@ std::vector<double> nodalSizes(const Mesh& mesh) {
 
 constexpr double kLocalOrder = 2.0;  ///< s: a node's share of the estimate ∝ h^s (AdaptiveLoop.hpp)
 constexpr double kMinRatio = 0.125, kMaxRatio = 1.5;  ///< h'/h per cycle at most this much finer, coarser
+/// No size below this fraction of the first mesh's smallest: gmsh made a sliver (a zero-area
+/// cell at the die lip) from sizes 10⁴ times finer than the first mesh's.
+constexpr double kSmallestSize = 1.0 / 128.0;
 
 /// The next mesh's nodal sizes from the indicators (AdaptiveLoop.hpp).
 std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::string>& targets, double tolerance,
-                              double maxSize, double maxDofs) {
+                              double minSize, double maxSize, double maxDofs) {
   const Mesh& mesh = sim.mesh();
   const ErrorEstimate& estimate = sim.errorEstimate();
   std::vector<double> e(mesh.numNodes(), 0.0);
@@ -62,7 +65,7 @@ std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::stri
   double predictedNodes = 0.0;
   for (GO n = 0; n < mesh.numNodes(); ++n) {
     const double ratio = e[n] > 0.0 ? std::clamp(std::pow(lambda / e[n], 1.0 / (s + 2.0)), kMinRatio, kMaxRatio) : kMaxRatio;
-    next[n] = std::min(h[n] * ratio, maxSize);
+    next[n] = std::clamp(h[n] * ratio, minSize, maxSize);
     predictedNodes += (h[n] / next[n]) * (h[n] / next[n]);
   }
   const double dofsPerNode = 3.0;
@@ -88,7 +91,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
   nlohmann::json cycles = nlohmann::json::array();
   std::unique_ptr<Simulation> sim, previous;
   SizeField field;
-  double maxSize = 0.0;
+  double minSize = 0.0, maxSize = 0.0;
   bool met = false;
   std::string why;
   for (int cycle = 0; cycle < maxCycles; ++cycle) {
@@ -102,6 +105,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
           throw InputError("Adaptivity/Responses: '" + name + "' is not one of the case's Responses");
       const std::vector<double> h = nodalSizes(sim->mesh());
       maxSize = *std::max_element(h.begin(), h.end());
+      minSize = kSmallestSize * *std::min_element(h.begin(), h.end());
     }
     if (previous) sim->startFrom(*previous);
     log() << "adaptivity: cycle " << cycle << ": " << sim->dofMap().numGlobalDofs() << " dofs\n";
@@ -139,7 +143,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
             std::to_string(maxCycles) + " cycles (Adaptivity/Maximum Cycles)";
       break;
     }
-    field = sizeFieldOnMesh(sim->mesh(), nextSizes(*sim, targets, tolerance, maxSize, maxDofs));
+    field = sizeFieldOnMesh(sim->mesh(), nextSizes(*sim, targets, tolerance, minSize, maxSize, maxDofs));
     previous = std::move(sim);
   }
   nlohmann::json block = {{"cycles", cycles},

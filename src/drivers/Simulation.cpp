@@ -160,7 +160,7 @@ void Simulation::interpolateFrom(const Simulation& other, Vector& x) const {
   m_bcs->imposeOnSolution(x);
 }
 
-void Simulation::startFrom(const Simulation& other) {
+void Simulation::startFrom(const Simulation& other, bool decideZoneLimits) {
   interpolateFrom(other, *m_solution);
   // Statuses carried over; a node inside an old zone limit is decided by whether it penetrates.
   const double penetrationTolerance = m_params.sublist("Contact").get<double>("Penetration Tolerance");
@@ -170,7 +170,7 @@ void Simulation::startFrom(const Simulation& other) {
     for (const ContactWall& from : other.contactWalls())
       if (from.name() == wall.name()) {
         wallValues(wall, *m_dofMap, *m_solution, p, u);
-        wall.takeStatusesFrom(from, &u, penetrationTolerance);
+        wall.takeStatusesFrom(from, decideZoneLimits ? &u : nullptr, penetrationTolerance);
       }
   if (!m_walls.empty()) updateWallScales(*m_solution);
   m_warmStart = true;

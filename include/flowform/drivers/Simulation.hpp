@@ -48,9 +48,11 @@ class Simulation {
 
   /// Starts from `other`'s state (another mesh of the same case): its solution interpolated at
   /// this mesh's nodes, its walls' statuses carried to this mesh's wall nodes
-  /// (ContactWall::takeStatusesFrom), the penalty scales from that state. run() then re-solves
-  /// from there, without the continuation (it falls back to it only if Newton fails).
-  void startFrom(const Simulation& other);
+  /// (ContactWall::takeStatusesFrom; with `decideZoneLimits` a node inside an old zone limit is
+  /// active if it penetrates at the interpolated state), the penalty scales from that state.
+  /// run() then re-solves from there, without the continuation (it falls back to it only if
+  /// Newton fails).
+  void startFrom(const Simulation& other, bool decideZoneLimits = true);
 
   /// `other`'s solution interpolated at this mesh's nodes, the constraints imposed, into `x`.
   void interpolateFrom(const Simulation& other, Vector& x) const;
