@@ -23,7 +23,7 @@ usage: error_estimate_checks.py FLOWFORM SOURCE_DIR WORKDIR
    not asserted.
 4. Adaptivity: the default plane extrusion with a 0.5 % target on the ram force meets it as
    estimated (exit 0), lists every cycle, and its true error against F_ref is at most twice the
-   target (effectivity >= 0.5; measured 0.49 %).
+   target (effectivity >= 0.5; measured 0.46 %).
 5. Bad input: an Adaptivity response that has no indicator (Dead Zone) exits 2, nothing written.
 """
 import os
