@@ -145,6 +145,10 @@ const SolveReport& Simulation::run() {
 
 void Simulation::estimateErrors(const std::vector<std::string>& indicatorResponses) {
   *m_estimate = twoLevelEstimate(*this, indicatorResponses);
+  if (!m_estimate->failure.empty()) {
+    log() << "flowform: NO ERROR ESTIMATE: " << m_estimate->failure << "\n";
+    return;
+  }
   for (const auto& [name, eta] : m_estimate->functionals)
     log() << "flowform: " << name << " = " << m_functionals[name] << ", estimated error " << eta << " ("
           << 100.0 * std::abs(eta) / std::max(std::abs(m_functionals[name]), 1e-300) << " %)\n";
@@ -186,7 +190,7 @@ void Simulation::moveNodes(const std::vector<std::array<double, 2>>& coords) {
 }
 
 int Simulation::exitStatus() const {
-  if (!m_report.converged || !m_notMet.empty()) return 3;
+  if (!m_report.converged || !m_notMet.empty() || !m_estimate->failure.empty()) return 3;
   if (m_sensitivity->requested() && !m_sensitivity->finite()) return 3;
   if (m_fdCheck && !m_fdCheck->allConverged()) return 3;
   return 0;
@@ -195,17 +199,22 @@ int Simulation::exitStatus() const {
 void Simulation::runSensitivity() {
   const auto start = std::chrono::steady_clock::now();
   m_sensitivity->compute(*m_model, *m_solution, *m_responses, m_mesh, *m_dofMap, m_walls);
-  if (m_sensitivity->checkRequested() && m_sensitivity->finite()) {
-    PerturbedRun base;
-    base.converged = true;
-    base.x = m_solution;
-    base.functionals = m_functionals;
-    base.states = wallStates(m_walls, *m_dofMap, *m_solution);
-    m_fdCheck = std::make_unique<FiniteDifferenceCheck>(
-        *m_sensitivity, base, m_physics, m_walls, m_mesh, *m_dofMap,
-        [this](const SensitivityParameter& h, double delta) { return solvePerturbed(h, delta); });
-  }
   m_sensitivitySeconds = secondsSince(start);
+  if (!m_deferCheck) checkSensitivities();
+}
+
+void Simulation::checkSensitivities() {
+  if (!m_sensitivity->checkRequested() || !m_sensitivity->computed() || !m_sensitivity->finite()) return;
+  const auto start = std::chrono::steady_clock::now();
+  PerturbedRun base;
+  base.converged = true;
+  base.x = m_solution;
+  base.functionals = m_functionals;
+  base.states = wallStates(m_walls, *m_dofMap, *m_solution);
+  m_fdCheck = std::make_unique<FiniteDifferenceCheck>(
+      *m_sensitivity, base, m_physics, m_walls, m_mesh, *m_dofMap,
+      [this](const SensitivityParameter& h, double delta) { return solvePerturbed(h, delta); });
+  m_sensitivitySeconds += secondsSince(start);
 }
 
 PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double delta) {
@@ -311,6 +320,8 @@ void Simulation::writeOutput(const std::string& outDir) const {
   if (m_fdCheck) m_fdCheck->report(summary);  // "fd_check"
   if (!m_notMet.empty())
     summary["message"] = m_notMet;
+  else if (!m_estimate->failure.empty())
+    summary["message"] = "no error estimate: " + m_estimate->failure;
   else if (m_report.converged && exitStatus() != 0)
     summary["message"] = !m_sensitivity->finite() ? "dq/dh is not finite (singular Jacobian?)"
                                                   : "a finite-difference run of the sensitivity check did not converge";

@@ -82,6 +82,12 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
   }
   fine.startFrom(coarse);
   fine.run();
+  estimate.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (fine.exitStatus() != 0) {
+    estimate.failure = "the solve on the refined mesh (" + std::to_string(estimate.refinedDofs) +
+                       " dofs) did not converge: " + fine.report().message;
+    return estimate;
+  }
   const double factor = 1.0 / (1.0 - std::pow(2.0, -estimate.order));
   estimate.refinedFunctionals = fine.functionals();
   for (const auto& [name, value] : coarse.functionals()) {
@@ -100,6 +106,7 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
 }
 
 void ErrorEstimate::report(nlohmann::json& summary) const {
+  if (!failure.empty()) summary["error_estimation"] = {{"method", "Two-Level"}, {"failure", failure}};
   if (!estimated) return;
   summary["functionals_error_estimate"] = nlohmann::json::object();
   for (const auto& [name, eta] : functionals) summary["functionals_error_estimate"][name] = eta;

@@ -23,7 +23,8 @@ usage: error_estimate_checks.py FLOWFORM SOURCE_DIR WORKDIR
    not asserted.
 4. Adaptivity: the default plane extrusion with a 0.5 % target on the ram force meets it as
    estimated (exit 0), lists every cycle, and its true error against F_ref is at most twice the
-   target (effectivity >= 0.5; measured 0.46 %).
+   target (effectivity >= 0.5; measured 0.46 %). Asked for dF/dnu and its FD check, it reports the
+   last cycle's, with an estimate, and runs the check once (2 runs), DDM = FD to 1e-4.
 5. Bad input: an Adaptivity response that has no indicator (Dead Zone) exits 2, nothing written.
 """
 import os
@@ -101,7 +102,9 @@ def main():
 
     out = os.path.join(work, "adaptive")
     run = launcher.run(flowform, extrusion, out, ["Adaptivity/Responses={ram_force}",
-                                                 "Adaptivity/Target Relative Error=0.005"], quiet=True, clean=True)
+                                                 "Adaptivity/Target Relative Error=0.005",
+                                                 "Sensitivity/Parameters={Friction Coefficient}",
+                                                 "Sensitivity/Finite Difference Check=true"], quiet=True, clean=True)
     s = summary.load(out) or {}
     cycles = (s.get("adaptivity") or {}).get("cycles") or []
     force = (s.get("functionals") or {}).get("ram_force")
@@ -111,6 +114,14 @@ def main():
         eta is not None and abs(eta) <= 0.005 * abs(force) and abs(ref - force) <= 2 * 0.005 * ref
     failed += check(ok, f"adaptive: exit {run.status}, {len(cycles)} cycles, dofs "
                         f"{[c.get('dofs') for c in cycles]}, F = {force}, estimate {eta}")
+    # The sensitivities of the last cycle, with their estimate, and one FD check (two runs), not
+    # one per cycle; DDM against FD as in the sensitivity tests (central differences, 1e-4).
+    fd = ((s.get("fd_check") or {}).get("ram_force") or {}).get("Friction Coefficient") or {}
+    runs = ((s.get("sensitivity") or {}).get("finite_difference") or {}).get("runs")
+    deta = ((s.get("sensitivities_error_estimate") or {}).get("ram_force") or {}).get("Friction Coefficient")
+    failed += check(runs == 2 and fd.get("rel_diff", 1.0) <= 1e-4 and deta is not None,
+                    f"adaptive with sensitivities: FD runs {runs}, DDM vs FD {fd.get('rel_diff')}, "
+                    f"dF/dnu estimate {deta}")
 
     out = os.path.join(work, "adaptive_bad")
     run = launcher.run(flowform, extrusion, out, ["Adaptivity/Responses={dead_zone}"], quiet=True, clean=True)

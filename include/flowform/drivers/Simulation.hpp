@@ -79,6 +79,11 @@ class Simulation {
   /// The run met its numbers but not what was asked of it (the adaptive loop's target): exit
   /// status 3 with `why` as the summary's message.
   void setNotMet(const std::string& why) { m_notMet = why; }
+  /// run() computes the DDM sensitivities but leaves their finite-difference check to a later
+  /// checkSensitivities() (the adaptive loop checks the last cycle's only).
+  void deferFiniteDifferenceCheck() { m_deferCheck = true; }
+  /// The finite-difference check of the computed sensitivities, when the case asks for it.
+  void checkSensitivities();
   /// A block the summary carries as it is under `key` (the adaptive loop's cycles).
   void addSummaryBlock(const std::string& key, const nlohmann::json& block) { m_extraSummary[key] = block; }
   const Mesh& mesh() const { return m_mesh; }
@@ -128,6 +133,7 @@ class Simulation {
   std::string m_baseDir;
   SizeField m_sizeField;
   bool m_warmStart = false;
+  bool m_deferCheck = false;
   std::string m_notMet;  ///< startFrom() gave the state: run() re-solves from it
   nlohmann::json m_extraSummary = nlohmann::json::object();
   int m_contactChanges = 0;

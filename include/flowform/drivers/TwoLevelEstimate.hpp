@@ -42,6 +42,8 @@ class Simulation;
 
 struct ErrorEstimate {
   bool estimated = false;
+  /// Why there is no estimate although one was asked for (the refined solve did not converge).
+  std::string failure;
   double order = 1.0;  ///< p
   /// η_φ ≈ φ(u) − φ(u_h), by response name.
   std::map<std::string, double> functionals;
@@ -61,7 +63,8 @@ struct ErrorEstimate {
 };
 
 /// The two-level estimate of `coarse`'s converged responses (and sensitivities, when computed),
-/// with indicators for `indicatorResponses`. Collective.
+/// with indicators for `indicatorResponses`. When the refined solve does not converge there is
+/// no estimate: `estimated` false and `failure` says why. Collective.
 ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::string>& indicatorResponses);
 
 }  // namespace flowform
