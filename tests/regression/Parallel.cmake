@@ -24,6 +24,14 @@ add_test(NAME parallel_equals_serial_sensitivity
                  ${CMAKE_CURRENT_BINARY_DIR}/parallel_sensitivity
                  --set "Sensitivity/Parameters={Friction Coefficient, Yield Stress, Rate Exponent}")
 set_tests_properties(parallel_equals_serial_sensitivity PROPERTIES LABELS "regression")
+# The two-level error estimate on 2 ranks: the refined mesh is partitioned anew, the coarse
+# solution and statuses carried over (replicated), the refined solve with contact.
+add_test(NAME parallel_equals_serial_error_estimate
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
+                 $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml
+                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_error_estimate
+                 --set "Error Estimation/Method=Two-Level")
+set_tests_properties(parallel_equals_serial_error_estimate PROPERTIES LABELS "regression" PROCESSORS 2)
 # MUMPS factors the distributed matrix itself (no gather): np = 2 and np = 3 against np = 1,
 # with contact (the status loop's decisions) and on the channel. The ranks factor with
 # different pivot orders, so the runs agree to the round-off of the factorization, amplified

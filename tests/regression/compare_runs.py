@@ -2,7 +2,8 @@
 """Runs a case serially and on N ranks and compares solution.h5 field by field.
 
 usage: compare_runs.py FLOWFORM MPIEXEC NP CASE.xml WORKDIR [--set P=V ...]
-Passes when every nodal field agrees to `tol` relative to its largest magnitude. The two
+Passes when every nodal field, and every response's error estimate when the case asks for
+them, agrees to `tol` relative to its largest magnitude. The two
 runs solve the same linear systems (the parallel direct solve gathers to one rank), so
 only the summation order of the assembly differs: round-off, amplified by the Newton
 iterations and the condition number; 1e-9 leaves ~4 orders of magnitude over the 1e-13
@@ -14,7 +15,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import h5io, launcher  # noqa: E402
+from flowform_tools import h5io, launcher, summary  # noqa: E402
 
 TOL = 1e-9
 
@@ -37,6 +38,13 @@ def main():
         scale = max(np.abs(x).max(), 1e-300)
         diff = np.abs(x - y).max() / scale
         print(f"{name}: max |serial - np{nprocs}| / max |serial| = {diff:.3e}")
+        failed |= not diff <= TOL
+    # The error estimates, when the case asks for them (the refined solve runs on the same ranks).
+    sa, sb = summary.load(serial_dir) or {}, summary.load(parallel_dir) or {}
+    for name, eta in (sa.get("functionals_error_estimate") or {}).items():
+        other = (sb.get("functionals_error_estimate") or {}).get(name)
+        diff = abs(eta - other) / max(abs(eta), 1e-300) if other is not None else float("inf")
+        print(f"error estimate {name}: |serial - np{nprocs}| / |serial| = {diff:.3e}")
         failed |= not diff <= TOL
     print("FAILED" if failed else "PASSED")
     return 1 if failed else 0
