@@ -7,7 +7,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/drivers/Simulation.hpp"
 #include "flowform/mesh/SizeField.hpp"
@@ -97,12 +96,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
   for (int cycle = 0; cycle < maxCycles; ++cycle) {
     const auto start = std::chrono::steady_clock::now();
     sim = std::make_unique<Simulation>(caseParams, baseDir, comm, cycle == 0 ? nullptr : &field);
-    if (cycle == 0) {
-      // Every target must be a response the estimate can localize.
-      for (const std::string& name : targets)
-        if (std::find(sim->responses().names().begin(), sim->responses().names().end(), name) ==
-            sim->responses().names().end())
-          throw InputError("Adaptivity/Responses: '" + name + "' is not one of the case's Responses");
+    if (cycle == 0) {  // the targets and the .geo were checked with the case (validateCase)
       const std::vector<double> h = nodalSizes(sim->mesh());
       maxSize = *std::max_element(h.begin(), h.end());
       minSize = kSmallestSize * *std::min_element(h.begin(), h.end());
@@ -117,10 +111,10 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
     }
     sim->estimateErrors(targets);
     const ErrorEstimate& estimate = sim->errorEstimate();
-    for (const std::string& name : targets)
-      if (!estimate.indicators.count(name))
-        throw InputError("Adaptivity/Responses: '" + name +
-                         "' is not a Boundary Force or Mean Pressure response (only those have indicators)");
+    if (!estimate.estimated) {
+      why = "cycle " + std::to_string(cycle) + ": no error estimate (" + estimate.failure + ")";
+      break;
+    }
     nlohmann::json entry = {{"cycle", cycle},
                             {"dofs", sim->dofMap().numGlobalDofs()},
                             {"newton_iterations", sim->report().newtonIterations},

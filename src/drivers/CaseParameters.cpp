@@ -197,9 +197,27 @@ void validateCase(ParameterList& params) {
     validateSublist(params.sublist("Sensitivity"), valid.sublist("Sensitivity"), "Sensitivity");
   if (params.isSublist("Adaptivity")) {
     validateSublist(params.sublist("Adaptivity"), valid.sublist("Adaptivity"), "Adaptivity");
-    if (params.sublist("Adaptivity").get<Teuchos::Array<std::string>>("Responses").empty())
+    const auto targets = params.sublist("Adaptivity").get<Teuchos::Array<std::string>>("Responses");
+    if (targets.empty())
       throw InputError("Adaptivity/Responses: name at least one response (Boundary Force or Mean Pressure) to "
                        "adapt the mesh to");
+    // Only the responses linear in the reactions have an adjoint, hence indicators.
+    const ParameterList& responses = params.sublist("Responses");
+    for (const std::string& name : targets) {
+      if (!responses.isSublist(name))
+        throw InputError("Adaptivity/Responses: '" + name + "' is not one of the case's Responses");
+      const ParameterList& response = responses.sublist(name);
+      const std::string type =
+          response.isParameter("Type") ? response.get<std::string>("Type") : std::string("Boundary Force");
+      if (type != "Boundary Force" && type != "Mean Pressure")
+        throw InputError("Adaptivity/Responses: '" + name + "' is a " + type +
+                         " response; the adaptive loop needs Boundary Force or Mean Pressure responses (their "
+                         "adjoint gives the indicators)");
+    }
+    const std::string file = params.sublist("Mesh").get<std::string>("File");
+    if (file.size() < 4 || file.substr(file.size() - 4) != ".geo")
+      throw InputError("Adaptivity: Mesh/File '" + file + "' is not a .geo file; the adaptive loop remeshes the "
+                       "geometry through gmsh and needs one");
   }
 }
 

@@ -25,7 +25,9 @@ usage: error_estimate_checks.py FLOWFORM SOURCE_DIR WORKDIR
    estimated (exit 0), lists every cycle, and its true error against F_ref is at most twice the
    target (effectivity >= 0.5; measured 0.46 %). Asked for dF/dnu and its FD check, it reports the
    last cycle's, with an estimate, and runs the check once (2 runs), DDM = FD to 1e-4.
-5. Bad input: an Adaptivity response that has no indicator (Dead Zone) exits 2, nothing written.
+5. Bad input: an Adaptivity response that has no indicator (Dead Zone), an unknown one, none, or
+   a .msh mesh (nothing to remesh) exits 2 before any solve (no Newton iteration in the log),
+   nothing written.
 """
 import os
 import sys
@@ -123,10 +125,17 @@ def main():
                     f"adaptive with sensitivities: FD runs {runs}, DDM vs FD {fd.get('rel_diff')}, "
                     f"dF/dnu estimate {deta}")
 
-    out = os.path.join(work, "adaptive_bad")
-    run = launcher.run(flowform, extrusion, out, ["Adaptivity/Responses={dead_zone}"], quiet=True, clean=True)
-    failed += check(run.status == 2 and not os.path.exists(os.path.join(out, "summary.json")),
-                    f"adaptive on Dead Zone: exit {run.status} (2 expected), nothing written")
+    # Bad input is refused before any work (the run would take seconds), nothing written.
+    for label, sets in (("Dead Zone target", ["Adaptivity/Responses={dead_zone}"]),
+                        ("unknown target", ["Adaptivity/Responses={nothing}"]),
+                        ("no target", ["Adaptivity/Target Relative Error=0.01"]),
+                        (".msh mesh", ["Mesh/File=mesh.msh", "Adaptivity/Responses={ram_force}"])):
+        out = os.path.join(work, "adaptive_bad")
+        run = launcher.run(flowform, extrusion, out, sets, clean=True, capture=True)
+        solved = "newton" in (run.stdout or "") + (run.stderr or "")
+        failed += check(run.status == 2 and not os.path.exists(out) and not solved,
+                        f"adaptive, {label}: exit {run.status} (2 expected), solved first: {solved}, "
+                        f"nothing written")
     print(f"error estimate checks: {failed} failed")
     return 1 if failed else 0
 
