@@ -14,7 +14,8 @@
 //     h_a'/h_a = (λ/e_a)^(1/(s+2)),   λ^(s/(s+2)) = ½ / Σ_a e_a^(2/(s+2)),
 // with s = 2 (a share falls like its area where the solution is smooth, more slowly at a
 // singular corner, which the next cycles then refine further), clamped to [1/8, 3/2] per
-// cycle. h_a' is capped by the largest size of the first mesh, and scaled up uniformly when
+// cycle. h_a' is capped by the largest size of the first mesh, floored at 1/128 of its smallest
+// (finer sizes made gmsh leave a zero-area cell at the die lip), and scaled up uniformly when
 // the predicted dof count Σ_a 3 (h_a/h_a')² exceeds Maximum Dofs.
 #pragma once
 
