@@ -36,7 +36,8 @@ def main():
                     help="also ask for dF/dnu and report its estimate and true error against this value")
     a = ap.parse_args()
     rows = []
-    runs = [(f"uniform h={h} hc={hc}", [f"Mesh/Geo Parameters/h={h}", f"Mesh/Geo Parameters/hc={hc}",
+    runs = [(f"uniform h={h} hc={hc}", ["Adaptivity/Enabled=false", f"Mesh/Geo Parameters/h={h}",
+                                          f"Mesh/Geo Parameters/hc={hc}",
                                           "Error Estimation/Method=Two-Level"]) for h, hc in
             (p.split(":") for p in a.uniform.split(","))]
     runs += [(f"adaptive target {t}", ["Adaptivity/Responses={ram_force}", f"Adaptivity/Target Relative Error={t}"])

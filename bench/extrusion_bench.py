@@ -55,7 +55,7 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 from flowform_tools import csvio, default_flowform, launcher, repo_path  # noqa: E402
 from flowform_tools.benchmark import require_tools  # noqa: E402
-from flowform_tools.case import Case  # noqa: E402
+from flowform_tools.case import FIXED_MESH, Case  # noqa: E402
 from flowform_tools.launcher import lit  # noqa: E402
 from flowform_tools.machine import binary_built, load, machine_info  # noqa: E402
 from flowform_tools.numerics import median, observed_order, richardson  # noqa: E402
@@ -83,7 +83,8 @@ def run_flowform(flowform, case, outdir, h, timeout):
     # the binary's time stamp at the start: a rebuild during the benchmark shows up here
     built = binary_built(flowform, seconds=True)
     before = load()
-    r = launcher.run(flowform, case, outdir, [f"Mesh/Geo Parameters/h={lit(h)}", f"Mesh/Geo Parameters/hc={lit(h / 4)}"],
+    r = launcher.run(flowform, case, outdir, FIXED_MESH +
+                     [f"Mesh/Geo Parameters/h={lit(h)}", f"Mesh/Geo Parameters/hc={lit(h / 4)}"],
                      log=log_path, timeout=timeout, peak_memory=True)
     return {"status": "timeout" if r.timed_out else r.status, "wall": r.wall, "rss": r.peak_rss,
             "binary_built": built, "command": r.command, "dir": outdir, "load": (before, load()),

@@ -39,7 +39,7 @@ def run_case(a, root, scene, nu, h, hc, extra, name):
     out = os.path.join(a.workdir, name)
     s = summary.load(out) if a.reuse else None
     if not s or s.get("exit_status") != 0:
-        sets = [f"Mesh/Geo Parameters/h={h}", f"Mesh/Geo Parameters/hc={hc}",
+        sets = ["Adaptivity/Enabled=false", f"Mesh/Geo Parameters/h={h}", f"Mesh/Geo Parameters/hc={hc}",
                 "Sensitivity/Parameters={Friction Coefficient}"] + extra
         sets += [f"Boundary Conditions/{w}/Friction Coefficient={nu}" for w in WALLS]
         run = launcher.run(a.flowform, os.path.join(root, CASES[scene]), out, sets, quiet=True, clean=True)

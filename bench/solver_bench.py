@@ -39,7 +39,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(
 from flowform_tools import default_flowform, launcher, repo_path  # noqa: E402
 from flowform_tools.benchmark import (CHANNEL_MATERIALS, NO_OUTPUT, channel_size,  # noqa: E402
                                       require_tools)
-from flowform_tools.case import Case  # noqa: E402
+from flowform_tools.case import FIXED_MESH, Case  # noqa: E402
 from flowform_tools.launcher import lit  # noqa: E402
 from flowform_tools.machine import binary_built, load, machine_info  # noqa: E402
 from flowform_tools.numerics import median, relative_difference  # noqa: E402
@@ -71,7 +71,7 @@ def run(args, case, outdir, sets, np=1, threads=None, timeout=None):
     if np > 1:
         env.update(MPI_ENV)
     before = load()
-    r = launcher.run(args.flowform, case, outdir, sets, np=np, env=env, quiet=True, peak_memory=True,
+    r = launcher.run(args.flowform, case, outdir, FIXED_MESH + list(sets), np=np, env=env, quiet=True, peak_memory=True,
                      log=os.path.join(outdir + ".log"), timeout=timeout or args.timeout, clean=True)
     s = r.summary or {}
     rec = {"status": "timeout" if r.timed_out else r.status, "wall": r.wall, "rss": r.peak_rss,

@@ -19,12 +19,13 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 from flowform_tools import REPO, default_flowform, launcher, summary  # noqa: E402
-from flowform_tools.case import Case  # noqa: E402
+from flowform_tools.case import FIXED_MESH, Case  # noqa: E402
 
 
 def run(args, case, name, sets):
     out = os.path.join(args.out, name)
-    launcher.run(args.flowform, os.path.join(args.root, "xml", case), out, sets, quiet=True)
+    launcher.run(args.flowform, os.path.join(args.root, "xml", case), out, FIXED_MESH + list(sets),
+                 quiet=True)
     return summary.load(out, missing_ok=False)
 
 

@@ -43,6 +43,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 from flowform_tools import REPO, csvio, launcher  # noqa: E402
+from flowform_tools.case import FIXED_MESH  # noqa: E402
 from flowform_tools.case import Case, Scene  # noqa: E402
 from flowform_tools.sweep import label, parse_values, write  # noqa: E402
 
@@ -73,7 +74,8 @@ def run_one(args, value):
     # flowform's own log goes next to its results (flowform writes nothing else there on
     # bad input, so the log is the only file then).
     log_path = os.path.join(run_dir, "flowform.log")
-    run = launcher.run(args.flowform, args.case, run_dir, sets, log=log_path, timeout=args.timeout or None)
+    run = launcher.run(args.flowform, args.case, run_dir, FIXED_MESH + list(sets), log=log_path,
+                       timeout=args.timeout or None)
     returncode = run.status
     if run.timed_out:
         with open(log_path, "a") as log:

@@ -108,7 +108,7 @@ int main(int argc, char* argv[]) {
     for (const auto& o : overrides) flowform::applyOverride(*params, o, *flowform::Simulation::validParameters());
 
     const std::string baseDir = std::filesystem::path(casePath).parent_path().string();
-    if (params->isSublist("Adaptivity")) {
+    if (flowform::adaptivityRequested(*params)) {
       flowform::validateCase(*params);
       const int status = flowform::runAdaptive(*params, baseDir.empty() ? "." : baseDir, comm, outDir);
       if (comm->getRank() == 0) flowform::log() << "flowform: results in " << outDir << "\n";

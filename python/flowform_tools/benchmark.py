@@ -6,7 +6,7 @@ Every number a benchmark reports comes from summary.json ("timings", "newton_ite
 """
 import os
 
-from . import launcher, machine
+from . import case as case_module, launcher, machine
 
 ELEMENTS = {"tri": "Triangle", "quad": "Quadrilateral"}
 CHANNEL_MATERIALS = {
@@ -37,12 +37,13 @@ def require_tools(flowform, script):
 
 
 def run_case(flowform, case, outdir, overrides, np=1, timeout=None, log=None, quiet=True):
-    """Runs flowform once under /usr/bin/time -v; returns a dict: status (exit status, or
+    """Runs flowform once under /usr/bin/time -v, on the case's own mesh (case.FIXED_MESH);
+    returns a dict: status (exit status, or
     "timeout"), wall (s), rss (peak resident bytes; under mpirun the largest process), stderr
     (captured unless log is given: then stdout and stderr go to the log file), summary (the
     parsed summary.json or None), load ([1-minute load average before, after]), log."""
     before = machine.load()
-    r = launcher.run(flowform, case, outdir, overrides, quiet=quiet, np=np, timeout=timeout, log=log,
+    r = launcher.run(flowform, case, outdir, case_module.FIXED_MESH + list(overrides), quiet=quiet, np=np, timeout=timeout, log=log,
                      capture=log is None, peak_memory=True)
     return {"status": "timeout" if r.timed_out else r.status, "wall": r.wall, "rss": r.peak_rss,
             "stderr": r.stderr or "", "summary": r.summary, "load": [before, machine.load()], "log": log}

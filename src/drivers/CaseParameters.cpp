@@ -135,6 +135,9 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
       "adaptive meshing to a requested accuracy (docs/theory.md §7): solve, estimate (Two-Level), size the next "
       "mesh from the indicators, remesh the .geo through gmsh, carry the solution and contact statuses over, "
       "solve again. No sublist: none of this runs");
+  adaptivity.set("Enabled", true,
+                 "false: the sublist is kept but not used (the case's own mesh, solved once), e.g. "
+                 "--set Adaptivity/Enabled=false on a scene that adapts by default");
   adaptivity.set("Responses", Teuchos::Array<std::string>(),
                  "names of the responses (Boundary Force or Mean Pressure) whose relative error is to be met");
   adaptivity.set("Target Relative Error", 5e-3, "|estimated error| / |value| to reach for every named response",
@@ -195,8 +198,9 @@ void validateCase(ParameterList& params) {
   // Only a case with a Sensitivity sublist gets one (with defaults): none means no work.
   if (params.isSublist("Sensitivity"))
     validateSublist(params.sublist("Sensitivity"), valid.sublist("Sensitivity"), "Sensitivity");
-  if (params.isSublist("Adaptivity")) {
+  if (params.isSublist("Adaptivity"))
     validateSublist(params.sublist("Adaptivity"), valid.sublist("Adaptivity"), "Adaptivity");
+  if (adaptivityRequested(params)) {
     const auto targets = params.sublist("Adaptivity").get<Teuchos::Array<std::string>>("Responses");
     if (targets.empty())
       throw InputError("Adaptivity/Responses: name at least one response (Boundary Force or Mean Pressure) to "
@@ -219,6 +223,13 @@ void validateCase(ParameterList& params) {
       throw InputError("Adaptivity: Mesh/File '" + file + "' is not a .geo file; the adaptive loop remeshes the "
                        "geometry through gmsh and needs one");
   }
+}
+
+bool adaptivityRequested(const ParameterList& params) {
+  if (!params.isSublist("Adaptivity")) return false;
+  const ParameterList& adaptivity = params.sublist("Adaptivity");
+  // A mistyped Enabled counts as asked for: validateCase then names the type error.
+  return !adaptivity.isParameter("Enabled") || !adaptivity.isType<bool>("Enabled") || adaptivity.get<bool>("Enabled");
 }
 
 FlowPhysics physicsFromCase(const ParameterList& params) {

@@ -137,7 +137,7 @@ const SolveReport& Simulation::run() {
     log() << "flowform: NOT CONVERGED: " << m_report.message << "\n";
   if (m_report.converged && m_sensitivity->requested()) runSensitivity();
   // The adaptive loop estimates itself (with the indicators it needs).
-  if (m_report.converged && exitStatus() == 0 && !m_params.isSublist("Adaptivity") &&
+  if (m_report.converged && exitStatus() == 0 && !adaptivityRequested(m_params) &&
       m_params.sublist("Error Estimation").get<std::string>("Method") == "Two-Level")
     estimateErrors();
   return m_report;

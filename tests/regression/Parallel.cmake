@@ -13,7 +13,7 @@ endforeach()
 add_test(NAME parallel_equals_serial_extrusion
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
                  $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml
-                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_extrusion)
+                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_extrusion --set "Adaptivity/Enabled=false")
 set_tests_properties(parallel_equals_serial_extrusion PROPERTIES LABELS "regression")
 # Sensitivities on 2 ranks: ∂R/∂h assembled per partition (the friction couples wall
 # neighbours across it), the DDM solve through the gathered direct solver; du/dh, dp/dh
@@ -21,7 +21,7 @@ set_tests_properties(parallel_equals_serial_extrusion PROPERTIES LABELS "regress
 add_test(NAME parallel_equals_serial_sensitivity
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
                  $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml
-                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_sensitivity
+                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_sensitivity --set "Adaptivity/Enabled=false"
                  --set "Sensitivity/Parameters={Friction Coefficient, Yield Stress, Rate Exponent}")
 set_tests_properties(parallel_equals_serial_sensitivity PROPERTIES LABELS "regression")
 # The two-level error estimate on 2 ranks: the refined mesh is partitioned anew, the coarse
@@ -29,7 +29,7 @@ set_tests_properties(parallel_equals_serial_sensitivity PROPERTIES LABELS "regre
 add_test(NAME parallel_equals_serial_error_estimate
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
                  $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml
-                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_error_estimate
+                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_error_estimate --set "Adaptivity/Enabled=false"
                  --set "Error Estimation/Method=Two-Level")
 set_tests_properties(parallel_equals_serial_error_estimate PROPERTIES LABELS "regression" PROCESSORS 2)
 # MUMPS factors the distributed matrix itself (no gather): np = 2 and np = 3 against np = 1,
@@ -40,7 +40,7 @@ foreach(np 2 3)
   add_test(NAME parallel_mumps_np${np}_extrusion
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
                    $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} ${np} ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml
-                   ${CMAKE_CURRENT_BINARY_DIR}/parallel_mumps_np${np}_extrusion
+                   ${CMAKE_CURRENT_BINARY_DIR}/parallel_mumps_np${np}_extrusion --set "Adaptivity/Enabled=false"
                    --set "Solver/Linear Solver/Type=MUMPS" --set "Mesh/Geo Parameters/h=0.2"
                    --set "Mesh/Geo Parameters/hc=0.05")
   add_test(NAME parallel_mumps_np${np}_channel

@@ -23,4 +23,7 @@ void validateCase(Teuchos::ParameterList& params);
 /// The bulk physics (geometry, body force, β, the material law) of a validated case.
 FlowPhysics physicsFromCase(const Teuchos::ParameterList& params);
 
+/// Whether the case asks for the adaptive loop: an Adaptivity sublist whose Enabled is not false.
+bool adaptivityRequested(const Teuchos::ParameterList& params);
+
 }  // namespace flowform

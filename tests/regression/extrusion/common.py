@@ -121,10 +121,11 @@ class Runner:
         os.makedirs(self.out, exist_ok=True)
 
     def command(self, name, h=None, nu=None, sets=(), case=None, powers=True):
-        """(name, outdir, case, --set list) of one run: mesh size h (hc = h/4), ν on every wall,
+        """(name, outdir, case, --set list) of one run: the scene without its adaptive loop, mesh size
+        h (hc = h/4), ν on every wall,
         the plastic, friction and tool power responses, then the given sets."""
         outdir = os.path.join(self.out, name)
-        overrides = []
+        overrides = ["Adaptivity/Enabled=false"]  # the mesh asked for, solved once
         if h is not None:
             overrides += [f"Mesh/Geo Parameters/h={lit(h)}", f"Mesh/Geo Parameters/hc={lit(h / 4)}"]
         if nu is not None:
