@@ -88,6 +88,11 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
 
   const auto loopStart = std::chrono::steady_clock::now();
   nlohmann::json cycles = nlohmann::json::array();
+  // Later cycles are meshed with the sizes the field gives, as they are: the case's Uniform
+  // Refinements and Size Factor shaped the first mesh, from which the field's sizes are taken.
+  Teuchos::ParameterList remeshed = caseParams;
+  remeshed.sublist("Mesh").set("Uniform Refinements", 0);
+  remeshed.sublist("Mesh").set("Size Factor", 1.0);
   std::unique_ptr<Simulation> sim, previous;
   SizeField field;
   double minSize = 0.0, maxSize = 0.0;
@@ -95,7 +100,8 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
   std::string why;
   for (int cycle = 0; cycle < maxCycles; ++cycle) {
     const auto start = std::chrono::steady_clock::now();
-    sim = std::make_unique<Simulation>(caseParams, baseDir, comm, cycle == 0 ? nullptr : &field);
+    sim = std::make_unique<Simulation>(cycle == 0 ? caseParams : remeshed, baseDir, comm,
+                                       cycle == 0 ? nullptr : &field);
     if (cycle == 0) {  // the targets and the .geo were checked with the case (validateCase)
       const std::vector<double> h = nodalSizes(sim->mesh());
       maxSize = *std::max_element(h.begin(), h.end());
