@@ -25,7 +25,9 @@ usage: error_estimate_checks.py FLOWFORM SOURCE_DIR WORKDIR
 4. Adaptivity: the plane and the axisymmetric extrusion as the scene files have them (a 0.5 %
    target on the ram force) meet it as estimated (exit 0), list every cycle, and their true
    errors against F_ref are at most twice the target (effectivity >= 0.5; measured 0.46 % and
-   0.05 %). Asked for dF/dnu and its FD check, it reports the
+   0.05 %). Mesh/Uniform Refinements shapes the first mesh only: from (0.2, 0.05) refined once the
+   next cycle has about the scene's cycle-1 dofs (ratio in [0.7, 1.4]; measured 1.03; 4 if the
+   field's sizes were refined again). Asked for dF/dnu and its FD check, it reports the
    last cycle's, with an estimate, and runs the check once (2 runs), DDM = FD to 1e-4.
 5. Bad input: an Adaptivity response that has no indicator (Dead Zone), an unknown one, none, or
    a .msh mesh (nothing to remesh) exits 2 before any solve (no Newton iteration in the log),
@@ -124,6 +126,17 @@ def main():
     failed += check(runs == 2 and fd.get("rel_diff", 1.0) <= 1e-4 and deta is not None,
                     f"adaptive with sensitivities: FD runs {runs}, DDM vs FD {fd.get('rel_diff')}, "
                     f"dF/dnu estimate {deta}")
+
+    # Uniform Refinements shape the first mesh only: from (0.2, 0.05) refined once (about the
+    # scene's own first mesh), the next cycle's mesh has about the dofs of the run above, not 4x.
+    out = os.path.join(work, "adaptive_refined_start")
+    run = launcher.run(flowform, extrusion, out, ["Mesh/Geo Parameters/h=0.2", "Mesh/Geo Parameters/hc=0.05",
+                                                 "Mesh/Uniform Refinements=1"], quiet=True, clean=True)
+    refined = ((summary.load(out) or {}).get("adaptivity") or {}).get("cycles") or []
+    ratio = refined[1]["dofs"] / cycles[1]["dofs"] if len(refined) > 1 and len(cycles) > 1 else None
+    failed += check(run.status == 0 and ratio is not None and 0.7 <= ratio <= 1.4,
+                    f"adaptive from a refined first mesh: exit {run.status}, cycle-1 dofs "
+                    f"{[c.get('dofs') for c in refined]} against {[c.get('dofs') for c in cycles]} (ratio {ratio})")
 
     # The axisymmetric scene as shipped: its own Adaptivity sublist, 0.5 % on the ram force.
     out = os.path.join(work, "adaptive_axisym")
