@@ -103,13 +103,9 @@ const SolveReport& Simulation::run() {
   const Vector initial(*m_solution, Teuchos::Copy);
   const double caseMinimum = m_params.sublist("Solver").sublist("Continuation").get<double>("Minimum Step");
   const double firstMinimum = m_walls.empty() ? 0.0 : std::max(caseMinimum, std::ldexp(1.0, -kFirstTryHalvings));
-  if (m_warmStart) {
-    // From another mesh's converged state (startFrom): Newton at the target from there; resolve()
-    // falls back to the predictor and the continuation only if that fails.
-    m_report = solver.resolve(*m_solution, m_physics);
-    if (!m_report.converged) Tpetra::deep_copy(*m_solution, initial);
-  }
-  if (!m_warmStart || !m_report.converged) m_report = solver.solve(*m_solution, m_physics, firstMinimum);
+  // From another mesh's converged state (startFrom): Newton at the target from there; resolve()
+  // falls back to the predictor and the continuation itself if that fails.
+  m_report = m_warmStart ? solver.resolve(*m_solution, m_physics) : solver.solve(*m_solution, m_physics, firstMinimum);
   auto again = [&](bool stick, const char* how) {
     log() << "flowform: the first solve failed (" << m_report.message << "); solving again " << how << "\n";
     Tpetra::deep_copy(*m_solution, initial);
@@ -173,7 +169,7 @@ void Simulation::startFrom(const Simulation& other, bool decideZoneLimits) {
   for (ContactWall& wall : m_walls)
     for (const ContactWall& from : other.contactWalls())
       if (from.name() == wall.name()) {
-        wallValues(wall, *m_dofMap, *m_solution, p, u);
+        if (decideZoneLimits) wallValues(wall, *m_dofMap, *m_solution, p, u);  // collective
         wall.takeStatusesFrom(from, decideZoneLimits ? &u : nullptr, penetrationTolerance);
       }
   if (!m_walls.empty()) updateWallScales(*m_solution);
