@@ -155,13 +155,10 @@ void Simulation::estimateErrors(const std::vector<std::string>& indicatorRespons
         << m_estimate->seconds << " s\n";
 }
 
-void Simulation::interpolateFrom(const Simulation& other, Vector& x) const {
-  interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap, x);
-  m_bcs->imposeOnSolution(x);
-}
-
 void Simulation::startFrom(const Simulation& other, bool decideZoneLimits) {
-  interpolateFrom(other, *m_solution);
+  interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap,
+              *m_solution);
+  m_bcs->imposeOnSolution(*m_solution);
   // Statuses carried over; a node inside an old zone limit is decided by whether it penetrates.
   const double penetrationTolerance = m_params.sublist("Contact").get<double>("Penetration Tolerance");
   std::vector<double> p;

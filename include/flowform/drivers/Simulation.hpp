@@ -54,9 +54,6 @@ class Simulation {
   /// Newton fails).
   void startFrom(const Simulation& other, bool decideZoneLimits = true);
 
-  /// `other`'s solution interpolated at this mesh's nodes, the constraints imposed, into `x`.
-  void interpolateFrom(const Simulation& other, Vector& x) const;
-
   /// Moves the mesh nodes to `coords` (same topology; every cell must stay positively
   /// oriented, else InputError naming the cell) and refreshes what caches geometry: the
   /// walls' curves and corners, the symmetry directions; the factors are dropped. The
