@@ -208,16 +208,12 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
       // (n_s the segment's outward normal; dΓ = 2πr ds when axisymmetric). Each node by its owner.
       const BoundaryCurve curve = buildBoundaryCurve(mesh, mesh.boundary(r.boundary));
       const size_t numNodes = curve.nodes.size();
-      const size_t numSegments = curve.closed ? numNodes : numNodes - 1;
       std::vector<std::array<double, 2>> w(numNodes, {0.0, 0.0});
-      for (size_t sgm = 0; sgm < numSegments; ++sgm) {
+      for (size_t sgm = 0; sgm < curve.segmentLength.size(); ++sgm) {
         const size_t a = sgm, b = (sgm + 1) % numNodes;
-        const auto& xa = mesh.coords[curve.nodes[a]];
-        const auto& xb = mesh.coords[curve.nodes[b]];
-        const double length = std::hypot(xb[0] - xa[0], xb[1] - xa[1]);
-        // The material lies on the curve's left: the outward normal is the direction turned right.
-        const std::array<double, 2> normal{(xb[1] - xa[1]) / length, -(xb[0] - xa[0]) / length};
-        integrateSegment(xa, xb, geometry, [&](double Na, double Nb, double ws) {
+        const auto& normal = curve.segmentNormals[sgm];
+        integrateSegment(mesh.coords[curve.nodes[a]], mesh.coords[curve.nodes[b]], geometry,
+                         [&](double Na, double Nb, double ws) {
           for (int c = 0; c < 2; ++c) {
             w[a][c] += Na * ws * normal[c];
             w[b][c] += Nb * ws * normal[c];

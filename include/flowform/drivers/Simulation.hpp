@@ -67,7 +67,7 @@ class Simulation {
   const std::string& baseDirectory() const { return m_baseDir; }
   /// The size field this mesh was made with (empty: the .geo's own sizes).
   const SizeField& sizeField() const { return m_sizeField; }
-  /// The error estimate of the responses (estimated() false when none was asked for).
+  /// The error estimate of the responses (its `estimated` false when none was made).
   const ErrorEstimate& errorEstimate() const { return *m_estimate; }
   /// Estimates the responses' errors now (the two-level estimate), with nodal indicators for
   /// `indicatorResponses` (the adaptive loop's targets). run() calls it when the case's
@@ -129,9 +129,9 @@ class Simulation {
   std::unique_ptr<ErrorEstimate> m_estimate;
   std::string m_baseDir;
   SizeField m_sizeField;
-  bool m_warmStart = false;
-  bool m_deferCheck = false;
-  std::string m_notMet;  ///< startFrom() gave the state: run() re-solves from it
+  bool m_warmStart = false;   ///< startFrom() gave the state: run() re-solves from it
+  bool m_deferCheck = false;  ///< run() leaves the FD check to checkSensitivities()
+  std::string m_notMet;       ///< why the run did not meet what was asked (setNotMet), or empty
   nlohmann::json m_extraSummary = nlohmann::json::object();
   int m_contactChanges = 0;
   std::unique_ptr<DofMap> m_dofMap;
