@@ -1,6 +1,7 @@
 #include "flowform/assembly/Responses.hpp"
 
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include <Sacado.hpp>
@@ -24,10 +25,13 @@ Teuchos::RCP<const Teuchos::ParameterList> Responses::validParameters() {
   Teuchos::setStringToIntegralParameter<int>(
       "Type", "Boundary Force", "what to compute (see include/flowform/assembly/Responses.hpp)",
       Teuchos::tuple<std::string>("Boundary Force", "Mean Pressure", "Boundary Power", "Flow Rate", "Plastic Power",
-                                  "Friction Power", "Penalty Power", "Stabilization Power", "Dead Zone"),
+                                  "Friction Power", "Penalty Power", "Stabilization Power", "Dead Zone",
+                                  "Boundary Extent", "Wall Gap"),
       valid.get());
-  valid->set("Boundary", "", "boundary group (Boundary Force, Mean Pressure, Boundary Power, Flow Rate)");
-  Teuchos::setStringToIntegralParameter<int>("Component", "X", "force component (Boundary Force)",
+  valid->set("Boundary", "",
+             "boundary group (Boundary Force, Mean Pressure, Boundary Power, Flow Rate, Boundary Extent) or contact "
+             "wall (Wall Gap)");
+  Teuchos::setStringToIntegralParameter<int>("Component", "X", "force component (Boundary Force), coordinate (Boundary Extent)",
                                              Teuchos::tuple<std::string>("X", "Y"), valid.get());
   valid->set("Fraction", 0.01, "Dead Zone: |u| below this fraction of the reference speed",
              Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
@@ -48,7 +52,8 @@ Responses::Responses(const Teuchos::ParameterList& list, const Mesh& mesh) {
     Response resp{name, r.get<std::string>("Type"), r.get<std::string>("Boundary"), r.get<std::string>("Component"),
                   r.get<double>("Fraction"), r.get<double>("Reference Speed")};
     const bool needsBoundary = resp.type == "Boundary Force" || resp.type == "Mean Pressure" ||
-                               resp.type == "Boundary Power" || resp.type == "Flow Rate";
+                               resp.type == "Boundary Power" || resp.type == "Flow Rate" ||
+                               resp.type == "Boundary Extent" || resp.type == "Wall Gap";
     if (needsBoundary && !mesh.hasBoundary(resp.boundary))
       throw InputError("Responses/" + name + "/Boundary: mesh '" + mesh.source + "' has no boundary group '" +
                        resp.boundary + "'; it has: " + mesh.boundaryNames());
@@ -226,6 +231,22 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
         local += w[k][0] * at(x, dofMap.dof(n, kUx)) + w[k][1] * at(x, dofMap.dof(n, kUy));
       }
       values[r.name] = sumOverRanks(comm, local);
+    } else if (r.type == "Boundary Extent") {
+      // Node positions do not depend on q: no derivative on a frozen shape (docs/theory.md §8).
+      double extent = -std::numeric_limits<double>::max();
+      for (const auto& e : mesh.boundary(r.boundary).edges)
+        for (GO n : e) extent = std::max(extent, mesh.coords[n][r.component == "X" ? 0 : 1]);
+      values[r.name] = extent;
+    } else if (r.type == "Wall Gap") {
+      double gap = 0.0;
+      bool found = false;
+      for (const ContactWall& wall : walls)
+        if (wall.name() == r.boundary) {
+          found = true;
+          for (int k = 0; k < wall.numNodes(); ++k) gap = std::max(gap, wall.gap(k));
+        }
+      if (!found) throw InputError("Responses/" + r.name + "/Boundary: '" + r.boundary + "' is not a Contact Wall");
+      values[r.name] = gap;
     } else if (r.type == "Plastic Power" || r.type == "Stabilization Power" || r.type == "Dead Zone") {
       if (tangent && r.type == "Dead Zone") continue;  // piecewise constant in x: no derivative
       Scalar plastic, stabilization;

@@ -84,8 +84,9 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParamet
         "Type", "Traction", "Velocity: prescribed velocity components; Symmetry: zero normal "
         "velocity on a straight boundary; Traction: prescribed traction (default zero: free). "
         "Traction X/Y act on any type, on the components it leaves free. Contact Wall: a frictional "
-        "tool wall (its parameters: contact/ContactWall.hpp)",
-        Teuchos::tuple<std::string>("Velocity", "Symmetry", "Traction", "Contact Wall"), valid.get());
+        "tool wall (its parameters: contact/ContactWall.hpp). Free Surface: traction-free, moved until it is a "
+        "streamline (freesurface/FreeSurface.hpp, docs/theory.md §8)",
+        Teuchos::tuple<std::string>("Velocity", "Symmetry", "Traction", "Contact Wall", "Free Surface"), valid.get());
     valid->set("Velocity X", 0.0, "prescribed u_x (Velocity type; omit to leave u_x free)");
     valid->set("Velocity Y", 0.0, "prescribed u_y (Velocity type; omit to leave u_y free)");
     valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components");
@@ -118,8 +119,9 @@ void BoundaryConditions::build(const Mesh& mesh) {
       throw InputError("Boundary Conditions/" + name + ": mesh '" + mesh.source +
                        "' has no boundary group of that name; it has: " + mesh.boundaryNames());
     Teuchos::ParameterList group = bcList.sublist(name);  // copy: validation sets defaults
-    if (group.isType<std::string>("Type") && group.get<std::string>("Type") == "Contact Wall")
-      continue;  // a ContactWall (contact/ContactWall.hpp) validates and assembles it
+    if (group.isType<std::string>("Type") &&
+        (group.get<std::string>("Type") == "Contact Wall" || group.get<std::string>("Type") == "Free Surface"))
+      continue;  // a ContactWall (contact/ContactWall.hpp) or FreeSurfaces (freesurface/) validates it
     try {
       group.validateParameters(*validGroupParameters());
     } catch (const std::exception& e) {

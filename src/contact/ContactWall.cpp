@@ -42,6 +42,15 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
              nonNegative);
   Teuchos::setStringToIntegralParameter<int>("Initial Status", "Active", "status of every wall node at the start",
                                              Teuchos::tuple<std::string>("Active", "Free"), valid.get());
+  Teuchos::setStringToIntegralParameter<int>(
+      "Released Nodes", "Fixed",
+      "Fixed: released nodes stay on the tool, traction-free (the paper's contact element); Free Surface: the "
+      "released tail downstream of the last active node is a free surface that leaves the tool and becomes a "
+      "streamline (docs/theory.md §8; needs Start Group)",
+      Teuchos::tuple<std::string>("Fixed", "Free Surface"), valid.get());
+  valid->set("Start Group", "",
+             "Released Nodes = Free Surface: the boundary group at the wall's upstream end (the tail runs away "
+             "from it)");
   return valid;
 }
 
@@ -70,6 +79,11 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   m_settings.tangentialPenalty = positive("Tangential Penalty Factor");
   m_settings.penaltyViscosity = list.get<double>("Penalty Viscosity");
   m_settings.initiallyActive = list.get<std::string>("Initial Status") == "Active";
+  m_settings.releasedFreeSurface = list.get<std::string>("Released Nodes") == "Free Surface";
+  m_settings.upstreamGroup = list.get<std::string>("Start Group");
+  if (m_settings.releasedFreeSurface && m_settings.upstreamGroup.empty())
+    throw InputError("Boundary Conditions/" + group + "/Start Group: Released Nodes = Free Surface needs the "
+                     "boundary group at the wall's upstream end");
 
   // InputError for a missing group, a zero-length segment, a branched group.
   m_curve = buildBoundaryCurve(mesh, mesh.boundary(group));
@@ -78,6 +92,8 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   m_viscosity.assign(m_curve.nodes.size(), 1.0);
   m_flowStress.assign(m_curve.nodes.size(), 1.0);
   refreshGeometry(mesh);
+  m_toolCoords = m_coords;
+  m_toolNormals = m_curve.normals;
 }
 
 void ContactWall::refreshGeometry(const Mesh& mesh) {
@@ -88,6 +104,7 @@ void ContactWall::refreshGeometry(const Mesh& mesh) {
     throw std::logic_error("contact wall '" + m_curve.name + "': moving the nodes changed the order of the curve");
   m_coords.clear();
   for (GO node : m_curve.nodes) m_coords.push_back(mesh.coords[node]);
+  if (m_settings.releasedFreeSurface && !m_toolNormals.empty()) m_curve.normals = m_toolNormals;
   m_cornerNormals.assign(m_curve.nodes.size(), {});
 }
 
@@ -113,6 +130,8 @@ StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::ve
     double violation = 0.0;
     if (m_active[k]) {
       violation = -p[k] - pressureTolerance;  // tension beyond the tolerance
+    } else if (gap(k) > 1e-9 * m_curve.arcLength.back()) {
+      continue;  // off the tool (a free surface left it): the surface update brings it back
     } else {
       const auto& n = m_curve.normals[k];
       violation = u[k][0] * n[0] + u[k][1] * n[1] - penetrationTolerance;  // moving into the tool

@@ -7,6 +7,7 @@
 
 #include "flowform/bc/BoundaryConditions.hpp"
 #include "flowform/core/InputError.hpp"
+#include "flowform/drivers/FreeSurfaceLoop.hpp"
 #include "flowform/drivers/OutputFields.hpp"
 #include "flowform/mesh/MeshReader.hpp"
 #include "flowform/solvers/NonlinearSolver.hpp"
@@ -166,6 +167,9 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
               Teuchos::rcp(new EnhancedNumberValidator<int>(1, 1000)));
   contact.set("Pressure Tolerance", 1e-3, "an active node is released when p < -this [stress]", nonNegative);
   contact.set("Penetration Tolerance", 1e-4, "a free node is activated when u·n > this [velocity]", nonNegative);
+  valid->set("Free Surface", *FreeSurfaceLoop::validParameters(),
+             "the loop that makes free surfaces streamlines (docs/theory.md §8); used only when a boundary group is "
+             "a Free Surface or a Contact Wall's Released Nodes are Free Surface");
   valid->set("Sensitivity", *Sensitivity::validParameters(),
              "sensitivities by direct differentiation and their finite-difference check (docs/theory.md §4)");
   valid->sublist("Regression", false, "expected values for a regression checker");
@@ -182,7 +186,8 @@ void validateCase(ParameterList& params) {
   } catch (const std::exception& e) {
     throw InputError("in the case parameter list: " + cleanTeuchosMessage(e.what()));
   }
-  for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output", "Contact", "Error Estimation"})
+  for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output", "Contact", "Error Estimation",
+                           "Free Surface"})
     validateSublist(params.sublist(name), valid.sublist(name), name);
   if (!params.isSublist("Mesh") || !params.sublist("Mesh").isParameter("File"))
     throw InputError("the case has no Mesh/File: name a .msh or .geo file");

@@ -75,6 +75,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   m_model = std::make_unique<FlowModel>(
       *m_assembler, createLinearSolver(m_params.sublist("Solver").sublist("Linear Solver"), *comm));
   m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
+  m_freeSurfaces = std::make_unique<FreeSurfaces>(bcList, m_mesh, m_walls);
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
   m_setupSeconds = secondsSince(start);
@@ -123,6 +124,15 @@ const SolveReport& Simulation::run() {
   m_report.newtonPerSolve = {m_report.newtonIterations};
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
+  if (m_report.converged && !m_freeSurfaces->empty()) {
+    m_freeSurfaceReport = convergeFreeSurfaces(solver, *m_solution, m_physics);
+    m_report.newtonIterations += m_freeSurfaceReport.newtonIterations;
+    m_contactChanges += m_freeSurfaceReport.contactChanges;
+    if (!m_freeSurfaceReport.converged) {
+      m_report.converged = false;
+      m_report.message = m_freeSurfaceReport.message;
+    }
+  }
   if (m_report.converged)
     m_functionals = m_responses->evaluate(*m_solution, m_mesh, *m_dofMap, *m_assembler, m_walls);
   m_solveSeconds = secondsSince(start);
@@ -171,6 +181,27 @@ void Simulation::startFrom(const Simulation& other, bool decideZoneLimits) {
       }
   if (!m_walls.empty()) updateWallScales(*m_solution);
   m_warmStart = true;
+}
+
+FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics) {
+  FreeSurfaceLoop::Hooks hooks;
+  hooks.velocities = [&] { return replicate(x, *m_dofMap); };
+  hooks.moveNodes = [&](const std::vector<std::array<double, 2>>& coords) {
+    moveNodes(coords);
+    m_bcs->imposeOnSolution(x);
+  };
+  hooks.resolve = [&](int& newton, int& changes, std::string& why) {
+    // Each shape is a new contact problem: the per-node change counts start again (the loop's
+    // own cap stops a shape and a status that chase each other).
+    for (ContactWall& wall : m_walls) wall.resetChangeCounts();
+    SolveReport r = solver.resolve(x, physics);
+    if (r.converged && !m_walls.empty()) changes = m_statusLoop->run(solver, x, physics, m_walls, r);
+    newton = r.newtonIterations;
+    why = r.message;
+    return r.converged;
+  };
+  return FreeSurfaceLoop(*m_freeSurfaces, m_params.sublist("Free Surface"))
+      .run(m_mesh, *m_dofMap, m_walls, physics.kernel.geometry, hooks);
 }
 
 void Simulation::moveNodes(const std::vector<std::array<double, 2>>& coords) {
@@ -231,6 +262,20 @@ PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double de
     run.functionals = m_responses->evaluate(*x, m_mesh, *m_dofMap, *m_assembler, m_walls);
     run.states = wallStates(m_walls, *m_dofMap, *x);
   }
+  if (run.converged && !m_freeSurfaces->empty()) {
+    // The same perturbation with the surfaces re-converged: the total derivative's difference.
+    const std::vector<std::array<double, 2>> shape = m_mesh.coords;
+    Vector moving(*x, Teuchos::Copy);
+    const FreeSurfaceReport surfaces = convergeFreeSurfaces(solver, moving, physics);
+    run.newtonIterations += surfaces.newtonIterations;
+    if (surfaces.converged) {
+      run.movingFunctionals = m_responses->evaluate(moving, m_mesh, *m_dofMap, *m_assembler, m_walls);
+    } else {
+      run.converged = false;
+      run.message = "with re-converged free surfaces: " + surfaces.message;
+    }
+    moveNodes(shape);
+  }
   for (size_t w = 0; w < m_walls.size(); ++w) m_walls[w].restore(saved[w]);
   m_model->setPhysics(m_physics);
   return run;
@@ -280,7 +325,8 @@ void Simulation::writeOutput(const std::string& outDir) const {
   m_report.report(summary);  // converged, message, newton_iterations, stages, ...
   summary["exit_status"] = exitStatus();
   summary["contact_changes"] = m_contactChanges;
-  summary["free_surface_iterations"] = 0;  // no free surfaces in this case
+  summary["free_surface_iterations"] = 0;
+  if (!m_freeSurfaces->empty()) m_freeSurfaceReport.report(summary);  // and the "free_surface" block
   summary["dofs"] = m_dofMap->ownedMap()->getGlobalNumElements();
   summary["mesh"] = {{"file", m_mesh.source}, {"nodes", m_mesh.numNodes()}, {"cells", m_mesh.numCells()},
                      {"cell_type", cellTypeName(m_mesh.cellType)}};

@@ -100,6 +100,11 @@ FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, con
       e.diff = std::abs(e.ddm - e.fd);
       e.forwardDiff = std::abs(e.ddm - e.forward);
       e.backwardDiff = std::abs(e.ddm - e.backward);
+      if (plus.movingFunctionals.count(response) && minus.movingFunctionals.count(response)) {
+        e.hasMoving = true;
+        e.fdMoving = (plus.movingFunctionals.at(response) - minus.movingFunctionals.at(response)) / (2 * pr.delta);
+        log() << "fd check:   d" << response << "/dh with re-converged free surfaces: " << e.fdMoving << "\n";
+      }
       m_entries[response][h.name] = e;
       log() << "fd check:   d" << response << "/dh: DDM " << e.ddm << ", FD " << e.fd << ", rel. difference "
             << relativeDifference(e.diff, e.ddm, e.fd) << (pr.unchangedSide == "both" ? "" : " (one-sided)") << "\n";
@@ -152,6 +157,10 @@ void FiniteDifferenceCheck::report(nlohmann::json& summary) const {
       if (pr.unchangedSide == "minus")
         entry["rel_diff_one_sided"] = relativeDifference(e.backwardDiff, e.ddm, e.backward);
       if (oneSided) entry["consistent_side"] = pr.unchangedSide;
+      if (e.hasMoving) {
+        entry["fd_moving_shape"] = e.fdMoving;
+        entry["shape_gap"] = relativeDifference(std::abs(e.fdMoving - e.fd), e.fdMoving, e.fd);
+      }
       check[response][pr.name] = entry;
     }
     if (!pr.converged)

@@ -14,6 +14,12 @@
 //                     Σ_tools Boundary Power = Plastic + Friction + Penalty + Stabilization
 //                     holds to solver tolerance; the last two vanish as h → 0.
 //   Dead Zone       — area (volume) of the cells where |u| < Fraction × Reference Speed
+//   Boundary Extent — the largest coordinate (Component X or Y) of the group's nodes: where a free
+//                     surface ends (the extrudate's half-thickness at the outlet: the swell)
+//   Wall Gap        — the largest distance of a contact wall's nodes from its tool (a released
+//                     tail that left it as a free surface)
+// The last two are positions: on a frozen shape their derivative is zero; the finite-difference
+// check with re-converged free surfaces gives the derivative through the shape.
 // Derivatives (docs/theory.md §4, paper eq. 21): dφ/dh = ∂φ/∂h + ∂φ/∂q dq/dh is the same evaluation
 // on a directional-derivative Fad, x seeded along dq/dh and h seeded (the reactions' part
 // from Assembler::tangent). Dead Zone is piecewise constant in q and has none.

@@ -48,6 +48,10 @@ struct ContactWallSettings {
   double tangentialPenalty = 10.0;   ///< κ_t
   double penaltyViscosity = 0.0;     ///< fixed μ of the penalties; 0: the local cell viscosity
   bool initiallyActive = true;
+  /// Released Nodes = Free Surface: the wall's released tail is a free surface that leaves the
+  /// tool (freesurface/FreeSurface.hpp); upstreamGroup names the group at its upstream end.
+  bool releasedFreeSurface = false;
+  std::string upstreamGroup;
 };
 
 /// What a status update decided: the wall node to change, or none (index −1).
@@ -72,6 +76,16 @@ class ContactWall {
   /// Re-reads the node coordinates from `mesh` (moved nodes): arc length, normals, segment
   /// lengths. The convex-corner normals are cleared: markConvexToolCorners() sets them again.
   void refreshGeometry(const Mesh& mesh);
+  /// Whether the released tail of this wall is a free surface (Released Nodes = Free Surface),
+  /// and the group at the wall's upstream end (Start Group).
+  bool releasedFreeSurface() const { return m_settings.releasedFreeSurface; }
+  const std::string& upstreamGroup() const { return m_settings.upstreamGroup; }
+  /// Distance of node k from the tool (the wall as made) along the tool's normal: 0 unless a
+  /// free-surface update moved the node off it. A node off the tool is never activated.
+  double gap(int k) const {
+    const auto& n = m_curve.normals[k];
+    return (m_toolCoords[k][0] - m_coords[k][0]) * n[0] + (m_toolCoords[k][1] - m_coords[k][1]) * n[1];
+  }
   /// Consecutive wall nodes, which the friction law couples (for the DofMap).
   std::vector<std::array<GO, 2>> couplings() const;
 
@@ -193,6 +207,9 @@ class ContactWall {
   std::vector<std::vector<std::array<double, 2>>> m_cornerNormals;
   std::vector<double> m_viscosity, m_flowStress;
   std::vector<std::array<double, 2>> m_coords;
+  /// The tool: the node positions and normals as made. A wall whose released tail is a free
+  /// surface keeps these normals when its nodes move (the tool does not turn with the material).
+  std::vector<std::array<double, 2>> m_toolCoords, m_toolNormals;
 };
 
 /// The case's contact walls: every sublist of `bcList` ("Boundary Conditions") whose Type is

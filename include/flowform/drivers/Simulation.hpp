@@ -18,6 +18,8 @@
 #include "flowform/contact/ContactWall.hpp"
 #include "flowform/discretization/DofMap.hpp"
 #include "flowform/drivers/ContactStatusLoop.hpp"
+#include "flowform/drivers/FreeSurfaceLoop.hpp"
+#include "flowform/freesurface/FreeSurface.hpp"
 #include "flowform/drivers/TwoLevelEstimate.hpp"
 #include "flowform/io/FieldSet.hpp"
 #include "flowform/mesh/Mesh.hpp"
@@ -42,8 +44,9 @@ class Simulation {
              const Teuchos::RCP<const Comm>& comm, const SizeField* sizeField = nullptr);
   ~Simulation();
 
-  /// Solves the flow problem, then, when the case asks, the sensitivities (DDM) and their
-  /// finite-difference check. The report says whether the flow solve converged.
+  /// Solves the flow problem (with its contact-status loop and, when the case has free surfaces,
+  /// the free-surface loop), then, when the case asks, the sensitivities (DDM, on the converged
+  /// shape) and their finite-difference check. The report says whether the flow solve converged.
   const SolveReport& run();
 
   /// Starts from `other`'s state (another mesh of the same case): its solution interpolated at
@@ -95,6 +98,8 @@ class Simulation {
   int exitStatus() const;
   const std::vector<ContactWall>& contactWalls() const { return m_walls; }
   int contactChanges() const { return m_contactChanges; }
+  const FreeSurfaces& freeSurfaces() const { return *m_freeSurfaces; }
+  const FreeSurfaceReport& freeSurfaceReport() const { return m_freeSurfaceReport; }
   /// The case's responses at the current solution (empty before run()).
   const std::map<std::string, double>& functionals() const { return m_functionals; }
   const Sensitivity& sensitivity() const { return *m_sensitivity; }
@@ -110,6 +115,9 @@ class Simulation {
   /// A Newton solver on the case's Solver sublist; `refreshScales` makes the walls take their
   /// penalty scales from the state before every Newton solve.
   NonlinearSolver newtonSolver(bool refreshScales);
+  /// The free-surface loop from the converged flow at `physics` (x, the walls and the mesh move);
+  /// the re-solves use `solver`.
+  FreeSurfaceReport convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics);
   /// DDM sensitivities at the converged solution and, when asked, their FD check.
   void runSensitivity();
   /// The solve at h + delta from the converged state, with its contact loop; the case's
@@ -139,6 +147,8 @@ class Simulation {
   std::unique_ptr<Assembler> m_assembler;
   std::unique_ptr<FlowModel> m_model;
   std::unique_ptr<ContactStatusLoop> m_statusLoop;
+  std::unique_ptr<FreeSurfaces> m_freeSurfaces;
+  FreeSurfaceReport m_freeSurfaceReport;
   Teuchos::RCP<Vector> m_solution;
   SolveReport m_report;
   double m_setupSeconds = 0.0;

@@ -11,6 +11,11 @@
 // within [h − δ, h + δ]: the entry says one_sided and lists the nodes that changed, and the
 // one-sided difference on the side where nothing changed is reported too.
 //
+// With free surfaces the DDM differentiates on the frozen (converged) shape; the runs at h ± δ
+// are then made twice: on the frozen shape (the check of the DDM) and with the surfaces
+// re-converged (fd_moving_shape: the total derivative), and the entry reports the gap between
+// the two (docs/theory.md §8).
+//
 // A run that does not converge makes its entries "not_converged" and the run's exit status
 // 3 (the primal results and the DDM sensitivities are still valid and written).
 #pragma once
@@ -41,6 +46,10 @@ struct PerturbedRun {
   std::vector<std::vector<WallNodeState>> states;  ///< [wall][node]
   int newtonIterations = 0;
   int contactChanges = 0;
+  /// With free surfaces: the responses after the surfaces are re-converged at h ± δ (the total
+  /// derivative through the shape); `functionals` are those on the frozen shape (the partial
+  /// derivative the DDM computes). Empty without free surfaces.
+  std::map<std::string, double> movingFunctionals;
 };
 
 class FiniteDifferenceCheck {
@@ -73,6 +82,8 @@ class FiniteDifferenceCheck {
   struct Entry {
     double ddm = 0.0, fd = 0.0, forward = 0.0, backward = 0.0;
     double diff = 0.0, forwardDiff = 0.0, backwardDiff = 0.0;
+    bool hasMoving = false;
+    double fdMoving = 0.0;  ///< central difference with re-converged free surfaces
   };
   /// A wall node whose status or friction branch differs between the runs.
   struct ChangedNode {

@@ -1,0 +1,67 @@
+// The loop that makes free surfaces streamlines (docs/theory.md §8, paper §2.1): from a converged
+// flow (contact statuses settled), update every free surface from the velocity field
+// (FreeSurfaces::step), move the interior nodes (extendBoundaryDisplacement), re-solve the flow
+// from the previous solution with its contact-status loop, and repeat until
+//     max |ū·n|/|ū| on the surfaces ≤ Flow Angle Tolerance  and
+//     the largest surface node move ≤ Move Tolerance × the surface's chord length.
+// The contact statuses and the shape are coupled through it (a tail node put back on its tool
+// may be activated by the status loop, an active node in tension released, so the tail starts
+// elsewhere); the loop counts its iterations and gives up, with the reason, at Maximum Iterations
+// — it cannot cycle silently.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+#include <nlohmann/json.hpp>
+
+#include "flowform/freesurface/FreeSurface.hpp"
+
+namespace flowform {
+
+struct FreeSurfaceReport {
+  bool converged = false;
+  int iterations = 0;          ///< surface updates made (each followed by a flow re-solve)
+  int newtonIterations = 0;    ///< of the re-solves
+  int contactChanges = 0;      ///< of the re-solves' status loops
+  double flowAngle = 0.0;      ///< max |ū·n|/|ū| at the returned state
+  double move = 0.0;           ///< the update's largest node move at the returned state
+  double seconds = 0.0;
+  std::string message;         ///< why it did not converge
+  nlohmann::json history = nlohmann::json::array();  ///< per iteration: angle, move, Newton, changes
+  /// free_surface_iterations and the "free_surface" block of summary.json.
+  void report(nlohmann::json& summary) const;
+};
+
+class FreeSurfaceLoop {
+ public:
+  /// Valid entries of the case's "Free Surface" sublist.
+  static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
+
+  /// What the loop needs from the run: the current nodal velocities (replicated, collective), a
+  /// move of the mesh nodes (InputError when a cell would invert), and a re-solve of the flow with
+  /// its status loop that says whether it converged and adds its Newton iterations and status
+  /// changes.
+  struct Hooks {
+    std::function<std::vector<double>()> velocities;
+    std::function<void(const std::vector<std::array<double, 2>>&)> moveNodes;
+    std::function<bool(int& newtonIterations, int& contactChanges, std::string& message)> resolve;
+  };
+
+  /// `settings` is the validated "Free Surface" sublist.
+  FreeSurfaceLoop(const FreeSurfaces& surfaces, const Teuchos::ParameterList& settings);
+
+  /// Runs the loop from the converged state the hooks see.
+  FreeSurfaceReport run(const Mesh& mesh, const DofMap& dofMap, const std::vector<ContactWall>& walls,
+                        Geometry geometry, const Hooks& hooks) const;
+
+ private:
+  const FreeSurfaces& m_surfaces;
+  int m_maxIterations;
+  double m_angleTolerance, m_moveTolerance;
+};
+
+}  // namespace flowform

@@ -1,0 +1,89 @@
+// Free surfaces that become streamlines (docs/theory.md §8, paper §2.1): a boundary part with
+// zero traction on which the converged flow must satisfy u·n = 0.
+//
+// Two kinds, both with a fixed start:
+//   - a "Free Surface" group (e.g. the jet after a die exit): its nodes from the end it shares
+//     with its Start Group (the die wall), which stays put;
+//   - the released tail of a contact wall whose "Released Nodes" are "Free Surface" (the die
+//     land): the nodes downstream of the wall's last active node, which is the separation
+//     point and moves with the contact status. The tool stays where it is: a tail node that
+//     would enter it is put back on it (gap 0), where the status loop may activate it.
+//
+// The update (spines): each surface node keeps its coordinate a along the chord direction c of
+// the surface as made (start → end), and its coordinate b along the outward normal m ⊥ c is
+// integrated from the start so that every segment is parallel to the mean velocity ū of its
+// two nodes:  b_{k+1} = b_k + (a_{k+1} − a_k) (ū·m)/(ū·c).
+// With P1/Q1 velocities linear along a straight segment, the volume flux through segment k is
+// L_k ū_k·n_k (ū weighted by r in axisymmetry: ū = (u_a(2r_a + r_b) + u_b(r_a + 2r_b)) /
+// (3(r_a + r_b))), so at a fixed point of the update no material crosses the surface: the
+// measure of convergence is max_k |ū_k·n_k| / |ū_k| (the sine of the angle between the flow
+// and the surface).
+// The node at the downstream end drags the straight group that ends there (the outlet): its
+// nodes move by the same displacement times their arc-length fraction from their other end.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "flowform/contact/ContactWall.hpp"
+#include "flowform/core/Types.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/mesh/Mesh.hpp"
+
+namespace flowform {
+
+/// One update of every free surface from the current velocity field.
+struct FreeSurfaceStep {
+  /// Per mesh node: the displacement the update gives to surface nodes and to the nodes of the
+  /// groups they drag (zero elsewhere; the mesh motion spreads it to the interior).
+  std::vector<std::array<double, 2>> displacement;
+  std::vector<char> prescribed;     ///< per mesh node: its displacement is boundary data
+  double maxFlowAngle = 0.0;        ///< max over surface segments of |ū·n|/|ū| at the current positions
+  double maxMove = 0.0;             ///< largest |displacement| of a surface node
+  int clampedToTool = 0;            ///< wall-tail nodes the update put back on their tool
+  std::string failure;              ///< why no update is possible (the flow turns against the surface)
+};
+
+class FreeSurfaces {
+ public:
+  /// The case's free surfaces: every "Free Surface" group of `bcList` and the tail of every wall
+  /// whose Released Nodes are Free Surface. InputError for a start group that does not share an
+  /// end with its surface, or a surface not made of one open curve.
+  FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mesh, const std::vector<ContactWall>& walls);
+
+  bool empty() const { return m_surfaces.empty(); }
+  /// Chord length of the longest surface: the length scale of the node-move tolerance.
+  double lengthScale() const { return m_lengthScale; }
+
+  /// The update at the velocities `u` (replicated, global dof ids: SolutionTransfer replicate()).
+  /// Wall tails start at the wall's last active node; tail nodes upstream of it that are off
+  /// their tool are put back on it.
+  FreeSurfaceStep step(const Mesh& mesh, const DofMap& dofMap, const std::vector<double>& u,
+                       const std::vector<ContactWall>& walls, Geometry geometry) const;
+
+  /// Per surface: its name, nodes from its start (wall tails: all wall nodes in flow order).
+  struct Surface {
+    std::string name;
+    std::vector<GO> nodes;       ///< from the fixed start to the downstream end
+    int wall = -1;               ///< index of the contact wall whose tail this is, or −1
+    std::vector<int> wallIndex;  ///< wall tails: the wall node of nodes[k]
+    std::array<double, 2> origin{}, chord{}, normal{};  ///< x_0, c, m (outward)
+    std::vector<double> along;   ///< a_k, fixed
+    std::vector<double> tool;    ///< wall tails: b_k of the tool (as made); the tail stays at b ≤ tool
+    std::vector<GO> dragged;     ///< the nodes of the straight group at the downstream end
+    std::vector<double> dragFraction;  ///< their arc-length fraction from the group's other end
+  };
+  const std::vector<Surface>& surfaces() const { return m_surfaces; }
+
+ private:
+  std::vector<Surface> m_surfaces;
+  double m_lengthScale = 1.0;
+};
+
+/// Valid entries of a "Free Surface" group sublist.
+Teuchos::RCP<const Teuchos::ParameterList> validFreeSurfaceParameters();
+
+}  // namespace flowform

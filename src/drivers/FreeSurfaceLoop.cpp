@@ -1,0 +1,102 @@
+#include "flowform/drivers/FreeSurfaceLoop.hpp"
+
+#include <chrono>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/freesurface/MeshMotion.hpp"
+
+namespace flowform {
+
+Teuchos::RCP<const Teuchos::ParameterList> FreeSurfaceLoop::validParameters() {
+  static Teuchos::RCP<Teuchos::ParameterList> valid;
+  if (!valid.is_null()) return valid;
+  valid = Teuchos::rcp(new Teuchos::ParameterList("Free Surface"));
+  using Teuchos::EnhancedNumberValidator;
+  valid->set("Maximum Iterations", 30, "surface updates at most; then the run is not converged (exit 3)",
+             Teuchos::rcp(new EnhancedNumberValidator<int>(0, 10000)));
+  valid->set("Flow Angle Tolerance", 1e-4,
+             "converged when max |u·n|/|u| over the surface segments (u the segment's mean velocity) is below this",
+             Teuchos::rcp(new EnhancedNumberValidator<double>(1e-14, 1.0)));
+  valid->set("Move Tolerance", 1e-4,
+             "and when the largest node move of the next update is below this fraction of the surface's length",
+             Teuchos::rcp(new EnhancedNumberValidator<double>(1e-14, 1.0)));
+  return valid;
+}
+
+void FreeSurfaceReport::report(nlohmann::json& summary) const {
+  summary["free_surface_iterations"] = iterations;
+  summary["free_surface"] = {{"converged", converged},      {"iterations", iterations},
+                             {"newton_iterations", newtonIterations}, {"contact_changes", contactChanges},
+                             {"flow_angle", flowAngle},     {"move", move},
+                             {"seconds", seconds},          {"history", history}};
+  if (!message.empty()) summary["free_surface"]["message"] = message;
+}
+
+FreeSurfaceLoop::FreeSurfaceLoop(const FreeSurfaces& surfaces, const Teuchos::ParameterList& settings)
+    : m_surfaces(surfaces),
+      m_maxIterations(settings.get<int>("Maximum Iterations")),
+      m_angleTolerance(settings.get<double>("Flow Angle Tolerance")),
+      m_moveTolerance(settings.get<double>("Move Tolerance")) {}
+
+FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, const std::vector<ContactWall>& walls,
+                                       Geometry geometry, const Hooks& hooks) const {
+  const auto start = std::chrono::steady_clock::now();
+  FreeSurfaceReport report;
+  const double moveLimit = m_moveTolerance * m_surfaces.lengthScale();
+  for (;;) {
+    const FreeSurfaceStep step = m_surfaces.step(mesh, dofMap, hooks.velocities(), walls, geometry);
+    if (!step.failure.empty()) {
+      report.message = "free-surface update impossible: " + step.failure;
+      break;
+    }
+    report.flowAngle = step.maxFlowAngle;
+    report.move = step.maxMove;
+    log() << "flowform: free surface " << report.iterations << ": max |u.n|/|u| = " << step.maxFlowAngle
+          << ", next move " << step.maxMove << (step.clampedToTool ? ", " + std::to_string(step.clampedToTool) +
+                                                                         " node(s) back on the tool"
+                                                                   : std::string())
+          << "\n";
+    if (step.maxFlowAngle <= m_angleTolerance && step.maxMove <= moveLimit) {
+      report.converged = true;
+      break;
+    }
+    if (report.iterations >= m_maxIterations) {
+      report.message = "the free surfaces did not converge in Free Surface/Maximum Iterations = " +
+                       std::to_string(m_maxIterations) + " updates (max |u.n|/|u| = " +
+                       std::to_string(step.maxFlowAngle) + ", node move " + std::to_string(step.maxMove) + ")";
+      break;
+    }
+    try {
+      hooks.moveNodes(extendBoundaryDisplacement(mesh, step.displacement, step.prescribed));
+    } catch (const InputError& e) {
+      report.message = std::string("the free-surface update would invert the mesh: ") + e.what();
+      break;
+    }
+    ++report.iterations;
+    int newton = 0, changes = 0;
+    std::string why;
+    const bool ok = hooks.resolve(newton, changes, why);
+    report.newtonIterations += newton;
+    report.contactChanges += changes;
+    report.history.push_back({{"flow_angle", step.maxFlowAngle}, {"move", step.maxMove},
+                              {"clamped_to_tool", step.clampedToTool}, {"newton_iterations", newton},
+                              {"contact_changes", changes}});
+    if (!ok) {
+      report.message = "the flow re-solve after free-surface update " + std::to_string(report.iterations) +
+                       " did not converge: " + why;
+      break;
+    }
+  }
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (report.converged)
+    log() << "flowform: free surfaces converged in " << report.iterations << " update(s), "
+          << report.newtonIterations << " Newton iterations\n";
+  else
+    log() << "flowform: FREE SURFACES NOT CONVERGED: " << report.message << "\n";
+  return report;
+}
+
+}  // namespace flowform

@@ -1,0 +1,205 @@
+#include "flowform/freesurface/FreeSurface.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "flowform/core/InputError.hpp"
+#include "flowform/mesh/BoundaryCurve.hpp"
+
+namespace flowform {
+
+namespace {
+
+using Point = std::array<double, 2>;
+
+double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1]; }
+Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1]}; }
+
+/// `curve`'s nodes from the end it shares with group `start` (InputError if it shares none).
+std::vector<GO> orderedFrom(const Mesh& mesh, const BoundaryCurve& curve, const std::string& start,
+                            const std::string& where) {
+  if (!mesh.hasBoundary(start))
+    throw InputError(where + "/Start Group: mesh '" + mesh.source + "' has no boundary group '" + start +
+                     "'; it has: " + mesh.boundaryNames());
+  if (curve.closed) throw InputError(where + ": a free surface must be an open curve, and this one is closed");
+  const BoundaryGroup& group = mesh.boundary(start);
+  auto touches = [&](GO node) {
+    for (const auto& e : group.edges)
+      if (e[0] == node || e[1] == node) return true;
+    return false;
+  };
+  std::vector<GO> nodes = curve.nodes;
+  const bool first = touches(nodes.front()), last = touches(nodes.back());
+  if (first == last)
+    throw InputError(where + "/Start Group: group '" + start + "' must share exactly one end of the surface " +
+                     (first ? "(it shares both)" : "(it shares neither)"));
+  if (last) std::reverse(nodes.begin(), nodes.end());
+  return nodes;
+}
+
+}  // namespace
+
+Teuchos::RCP<const Teuchos::ParameterList> validFreeSurfaceParameters() {
+  static Teuchos::RCP<Teuchos::ParameterList> valid;
+  if (!valid.is_null()) return valid;
+  valid = Teuchos::rcp(new Teuchos::ParameterList("Free Surface"));
+  valid->set("Type", "Free Surface", "a traction-free boundary that becomes a streamline (docs/theory.md §8)");
+  valid->set("Start Group", "",
+             "the boundary group that shares the surface's fixed start (the die wall at a die exit)");
+  return valid;
+}
+
+FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mesh,
+                           const std::vector<ContactWall>& walls) {
+  auto make = [&](const std::string& name, std::vector<GO> nodes, const std::string& where) {
+    Surface s;
+    s.name = name;
+    s.nodes = std::move(nodes);
+    // Spine frame: c along the chord start → end, m ⊥ c on the outward side of the curve.
+    const Point x0 = mesh.coords[s.nodes.front()], x1 = mesh.coords[s.nodes.back()];
+    const double length = std::hypot(x1[0] - x0[0], x1[1] - x0[1]);
+    if (!(length > 0.0)) throw InputError(where + ": the surface's ends coincide");
+    s.origin = x0;
+    s.chord = {(x1[0] - x0[0]) / length, (x1[1] - x0[1]) / length};
+    const BoundaryCurve curve = buildBoundaryCurve(mesh, mesh.boundary(name));
+    Point outward{0.0, 0.0};
+    for (const auto& n : curve.segmentNormals) outward = {outward[0] + n[0], outward[1] + n[1]};
+    s.normal = {-s.chord[1], s.chord[0]};
+    if (dot(s.normal, outward) < 0.0) s.normal = {-s.normal[0], -s.normal[1]};
+    for (GO node : s.nodes) {
+      const Point d = minus(mesh.coords[node], x0);
+      s.along.push_back(dot(d, s.chord));
+      s.tool.push_back(dot(d, s.normal));
+    }
+    for (size_t k = 1; k < s.along.size(); ++k)
+      if (!(s.along[k] > s.along[k - 1]))
+        throw InputError(where + ": the surface turns back on its chord (node " + std::to_string(s.nodes[k]) +
+                         "); the spine update needs a surface that advances along it");
+    // The straight group at the downstream end, dragged along.
+    const GO end = s.nodes.back();
+    for (const BoundaryGroup& g : mesh.boundaries) {
+      if (g.name == name) continue;
+      bool has = false;
+      for (const auto& e : g.edges) has = has || e[0] == end || e[1] == end;
+      if (!has) continue;
+      const BoundaryCurve other = buildBoundaryCurve(mesh, g);
+      if (!other.isStraight(1e-8))
+        throw InputError(where + ": group '" + g.name + "' at the surface's downstream end must be straight");
+      const auto& n = other.segmentNormals.front();
+      if (std::abs(dot(n, s.normal)) > 1e-8)
+        throw InputError(where + ": group '" + g.name + "' at the surface's downstream end must run along the "
+                         "surface's normal (its end node moves along it)");
+      // Fraction of the arc length from the group's other (fixed) end.
+      const double total = other.arcLength.back();
+      const bool endFirst = other.nodes.front() == end;
+      for (size_t k = 0; k < other.nodes.size(); ++k) {
+        if (other.nodes[k] == end) continue;
+        s.dragged.push_back(other.nodes[k]);
+        s.dragFraction.push_back(endFirst ? 1.0 - other.arcLength[k] / total : other.arcLength[k] / total);
+      }
+    }
+    m_lengthScale = std::max(m_lengthScale, length);
+    return s;
+  };
+  m_lengthScale = 0.0;
+  for (auto it = bcList.begin(); it != bcList.end(); ++it) {
+    const std::string& name = bcList.name(it);
+    if (!bcList.isSublist(name)) continue;
+    const Teuchos::ParameterList& group = bcList.sublist(name);
+    if (!group.isType<std::string>("Type") || group.get<std::string>("Type") != "Free Surface") continue;
+    const std::string where = "Boundary Conditions/" + name + " (Free Surface)";
+    Teuchos::ParameterList list = group;
+    try {
+      list.validateParametersAndSetDefaults(*validFreeSurfaceParameters());
+    } catch (const std::exception& e) {
+      throw InputError(where + ": " + e.what());
+    }
+    const BoundaryCurve curve = buildBoundaryCurve(mesh, mesh.boundary(name));
+    m_surfaces.push_back(make(name, orderedFrom(mesh, curve, list.get<std::string>("Start Group"), where), where));
+  }
+  for (size_t w = 0; w < walls.size(); ++w) {
+    const ContactWall& wall = walls[w];
+    if (!wall.releasedFreeSurface()) continue;
+    const std::string where = "Boundary Conditions/" + wall.name() + " (Contact Wall, Released Nodes = Free Surface)";
+    std::vector<GO> nodes = orderedFrom(mesh, wall.curve(), wall.upstreamGroup(), where);
+    Surface s = make(wall.name(), nodes, where);
+    s.wall = static_cast<int>(w);
+    const bool reversed = nodes.front() != wall.curve().nodes.front();
+    for (int k = 0; k < wall.numNodes(); ++k) s.wallIndex.push_back(reversed ? wall.numNodes() - 1 - k : k);
+    m_surfaces.push_back(std::move(s));
+  }
+  if (m_lengthScale <= 0.0) m_lengthScale = 1.0;
+}
+
+FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const std::vector<double>& u,
+                                   const std::vector<ContactWall>& walls, Geometry geometry) const {
+  FreeSurfaceStep out;
+  out.displacement.assign(mesh.numNodes(), {0.0, 0.0});
+  out.prescribed.assign(mesh.numNodes(), 0);
+  auto velocity = [&](GO node) -> Point {
+    return {u[dofMap.globalDof(node, kUx)], u[dofMap.globalDof(node, kUy)]};
+  };
+  for (const Surface& s : m_surfaces) {
+    const size_t n = s.nodes.size();
+    std::vector<double> b(n);
+    for (size_t k = 0; k < n; ++k) b[k] = dot(minus(mesh.coords[s.nodes[k]], s.origin), s.normal);
+    // The fixed start: a Free Surface group's first node; a wall tail's last active node.
+    size_t first = 0;
+    if (s.wall >= 0) {
+      const ContactWall& wall = walls[s.wall];
+      for (size_t k = 0; k < n; ++k)
+        if (wall.isActive(s.wallIndex[k])) first = k;
+    }
+    std::vector<double> bNew = b;
+    for (size_t k = 0; k < first; ++k)  // upstream of the separation point: on the tool
+      if (b[k] < s.tool[k]) bNew[k] = s.tool[k];
+    for (size_t k = first; k + 1 < n; ++k) {
+      const GO na = s.nodes[k], nb = s.nodes[k + 1];
+      const Point ua = velocity(na), ub = velocity(nb);
+      // The segment's flux-weighted mean velocity (plain mean in plane strain).
+      double wa = 0.5, wb = 0.5;
+      if (geometry == Geometry::Axisymmetric) {
+        const double ra = mesh.coords[na][0], rb = mesh.coords[nb][0];
+        if (ra + rb > 0.0) {
+          wa = (2.0 * ra + rb) / (3.0 * (ra + rb));
+          wb = 1.0 - wa;
+        }
+      }
+      const Point mean{wa * ua[0] + wb * ub[0], wa * ua[1] + wb * ub[1]};
+      const double speed = std::hypot(mean[0], mean[1]);
+      const double uc = dot(mean, s.chord), um = dot(mean, s.normal);
+      if (!(uc > 1e-3 * speed) || !(speed > 0.0)) {
+        out.failure = "the flow on free surface '" + s.name + "' does not advance along it near (" +
+                      std::to_string(mesh.coords[na][0]) + ", " + std::to_string(mesh.coords[na][1]) +
+                      "): the spine update needs u·c > 0";
+        return out;
+      }
+      // Angle between the flow and the segment at the current positions.
+      const Point xa = mesh.coords[na], xb = mesh.coords[nb];
+      const Point d = minus(xb, xa);
+      const double len = std::hypot(d[0], d[1]);
+      const Point segNormal{d[1] / len, -d[0] / len};  // either side: only |ū·n| is used
+      out.maxFlowAngle = std::max(out.maxFlowAngle, std::abs(dot(mean, segNormal)) / speed);
+      bNew[k + 1] = bNew[k] + (s.along[k + 1] - s.along[k]) * um / uc;
+      if (s.wall >= 0 && bNew[k + 1] > s.tool[k + 1]) {  // into the tool: back on it
+        bNew[k + 1] = s.tool[k + 1];
+        ++out.clampedToTool;
+      }
+    }
+    for (size_t k = 0; k < n; ++k) {
+      const double db = bNew[k] - b[k];
+      out.displacement[s.nodes[k]] = {db * s.normal[0], db * s.normal[1]};
+      out.prescribed[s.nodes[k]] = 1;
+      out.maxMove = std::max(out.maxMove, std::abs(db));
+    }
+    const double dEnd = bNew[n - 1] - b[n - 1];
+    for (size_t k = 0; k < s.dragged.size(); ++k) {
+      const double f = s.dragFraction[k];
+      out.displacement[s.dragged[k]] = {f * dEnd * s.normal[0], f * dEnd * s.normal[1]};
+      out.prescribed[s.dragged[k]] = 1;
+    }
+  }
+  return out;
+}
+
+}  // namespace flowform
