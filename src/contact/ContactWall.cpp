@@ -46,8 +46,16 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
       "Released Nodes", "Fixed",
       "Fixed: released nodes stay on the tool, traction-free (the paper's contact element); Free Surface: the "
       "released tail downstream of the last active node is a free surface that leaves the tool and becomes a "
-      "streamline (docs/theory.md §8; needs Start Group)",
-      Teuchos::tuple<std::string>("Fixed", "Free Surface"), valid.get());
+      "streamline (docs/theory.md §8; needs Start Group); Never: a bilateral wall, no node is released",
+      Teuchos::tuple<std::string>("Fixed", "Free Surface", "Never"), valid.get());
+  Teuchos::setStringToIntegralParameter<int>(
+      "Convex Corners", "Open",
+      "at a convex tool corner shared with another wall (the die lip): Open: the corner node is held by this wall "
+      "only while it is active here, and it is released when it slides along the other wall (then the interpolated "
+      "velocity crosses this wall's first segment: a leak of O(h) of the throughput, docs/contact.md); Closed: the "
+      "corner node is always held by this wall (active, never released): no leak, the corner velocity is then "
+      "limited to the other wall's tangent, or zero if that wall holds it too",
+      Teuchos::tuple<std::string>("Open", "Closed"), valid.get());
   valid->set("Start Group", "",
              "Released Nodes = Free Surface: the boundary group at the wall's upstream end (the tail runs away "
              "from it)");
@@ -80,6 +88,8 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   m_settings.penaltyViscosity = list.get<double>("Penalty Viscosity");
   m_settings.initiallyActive = list.get<std::string>("Initial Status") == "Active";
   m_settings.releasedFreeSurface = list.get<std::string>("Released Nodes") == "Free Surface";
+  m_settings.neverReleased = list.get<std::string>("Released Nodes") == "Never";
+  m_settings.closedCorners = list.get<std::string>("Convex Corners") == "Closed";
   m_settings.upstreamGroup = list.get<std::string>("Start Group");
   if (m_settings.releasedFreeSurface && m_settings.upstreamGroup.empty())
     throw InputError("Boundary Conditions/" + group + "/Start Group: Released Nodes = Free Surface needs the "
@@ -128,6 +138,7 @@ StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::ve
   if (unsettled) *unsettled = 0;
   for (int k = 0; k < numNodes(); ++k) {
     double violation = 0.0;
+    if (held(k) || (m_active[k] && m_settings.neverReleased)) continue;  // no status change
     if (m_active[k]) {
       violation = -p[k] - pressureTolerance;  // tension beyond the tolerance
     } else if (gap(k) > 1e-9 * m_curve.arcLength.back()) {
@@ -208,7 +219,7 @@ void ContactWall::takeStatusesFrom(const ContactWall& other, const std::vector<s
       for (const auto& corner : m_cornerNormals[k])
         active = active && v[0] * corner[0] + v[1] * corner[1] > penetrationTolerance;
     }
-    m_active[k] = active;
+    m_active[k] = active || held(k);
   }
   resetChangeCounts();
 }

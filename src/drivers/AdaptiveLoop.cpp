@@ -144,7 +144,8 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
             std::to_string(maxCycles) + " cycles (Adaptivity/Maximum Cycles)";
       break;
     }
-    field = sizeFieldOnMesh(sim->mesh(), nextSizes(*sim, targets, tolerance, minSize, maxSize, maxDofs));
+    // On the mesh as made: a free-surface update moved boundary nodes off the .geo's curves.
+    field = sizeFieldOnMesh(sim->meshAsMade(), nextSizes(*sim, targets, tolerance, minSize, maxSize, maxDofs));
     previous = std::move(sim);
   }
   nlohmann::json block = {{"cycles", cycles},

@@ -47,7 +47,7 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
   FreeSurfaceReport report;
   const double moveLimit = m_moveTolerance * m_surfaces.lengthScale();
   for (;;) {
-    const FreeSurfaceStep step = m_surfaces.step(mesh, dofMap, hooks.velocities(), walls, geometry);
+    const FreeSurfaceStep step = m_surfaces.step(mesh, dofMap, hooks.velocities(), walls, geometry, moveLimit);
     if (!step.failure.empty()) {
       report.message = "free-surface update impossible: " + step.failure;
       break;
@@ -58,8 +58,10 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
           << ", next move " << step.maxMove << (step.clampedToTool ? ", " + std::to_string(step.clampedToTool) +
                                                                          " node(s) back on the tool"
                                                                    : std::string())
+          << (step.released.empty() ? std::string()
+                                    : ", " + std::to_string(step.released.size()) + " contact node(s) not reached")
           << "\n";
-    if (step.maxFlowAngle <= m_angleTolerance && step.maxMove <= moveLimit) {
+    if (step.maxFlowAngle <= m_angleTolerance && step.maxMove <= moveLimit && step.released.empty()) {
       report.converged = true;
       break;
     }
@@ -69,6 +71,7 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
                        std::to_string(step.maxFlowAngle) + ", node move " + std::to_string(step.maxMove) + ")";
       break;
     }
+    for (const auto& [w, k] : step.released) hooks.release(w, k);
     try {
       hooks.moveNodes(extendBoundaryDisplacement(mesh, step.displacement, step.prescribed));
     } catch (const InputError& e) {
@@ -82,7 +85,8 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     report.newtonIterations += newton;
     report.contactChanges += changes;
     report.history.push_back({{"flow_angle", step.maxFlowAngle}, {"move", step.maxMove},
-                              {"clamped_to_tool", step.clampedToTool}, {"newton_iterations", newton},
+                              {"clamped_to_tool", step.clampedToTool}, {"released", step.released.size()},
+                              {"newton_iterations", newton},
                               {"contact_changes", changes}});
     if (!ok) {
       report.message = "the flow re-solve after free-surface update " + std::to_string(report.iterations) +

@@ -48,6 +48,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   if (sizeField) m_sizeField = *sizeField;
 
   m_mesh = readMesh(m_params.sublist("Mesh"), baseDir, *comm, sizeField);
+  m_madeCoords = m_mesh.coords;
   if (m_physics.kernel.geometry == Geometry::Axisymmetric)
     for (const auto& xy : m_mesh.coords)
       if (xy[0] < -1e-12)
@@ -189,6 +190,11 @@ FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vect
   hooks.moveNodes = [&](const std::vector<std::array<double, 2>>& coords) {
     moveNodes(coords);
     m_bcs->imposeOnSolution(x);
+  };
+  hooks.release = [&](int w, int k) {
+    m_walls[w].setActive(k, false);
+    log() << "contact: " << m_walls[w].name() << " node " << m_walls[w].curve().nodes[k]
+          << " released: the separated surface passes below it\n";
   };
   hooks.resolve = [&](int& newton, int& changes, std::string& why) {
     // Each shape is a new contact problem: the per-node change counts start again (the loop's

@@ -132,7 +132,8 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
 }
 
 FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const std::vector<double>& u,
-                                   const std::vector<ContactWall>& walls, Geometry geometry) const {
+                                   const std::vector<ContactWall>& walls, Geometry geometry,
+                                   double gapTolerance) const {
   FreeSurfaceStep out;
   out.displacement.assign(mesh.numNodes(), {0.0, 0.0});
   out.prescribed.assign(mesh.numNodes(), 0);
@@ -143,17 +144,21 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
     const size_t n = s.nodes.size();
     std::vector<double> b(n);
     for (size_t k = 0; k < n; ++k) b[k] = dot(minus(mesh.coords[s.nodes[k]], s.origin), s.normal);
-    // The fixed start: a Free Surface group's first node; a wall tail's last active node.
-    size_t first = 0;
-    if (s.wall >= 0) {
-      const ContactWall& wall = walls[s.wall];
-      for (size_t k = 0; k < n; ++k)
-        if (wall.isActive(s.wallIndex[k])) first = k;
-    }
+    // A Free Surface group: every node but the first follows the streamline from it. A wall:
+    // active nodes stay on the tool; each run of free nodes follows the streamline from the node
+    // before it (an active node: the separation point, or the wall's upstream end).
+    // An active node that a separated run's streamline passes below the tool (by more than
+    // gapTolerance) is not touched by the material: it is released and the run goes on through it.
+    const ContactWall* wall = s.wall >= 0 ? &walls[s.wall] : nullptr;
     std::vector<double> bNew = b;
-    for (size_t k = 0; k < first; ++k)  // upstream of the separation point: on the tool
-      if (b[k] < s.tool[k]) bNew[k] = s.tool[k];
-    for (size_t k = first; k + 1 < n; ++k) {
+    std::vector<char> free(n, 1);
+    if (wall)
+      for (size_t k = 0; k < n; ++k) free[k] = !wall->isActive(s.wallIndex[k]);
+    for (size_t k = 0; k + 1 < n; ++k) {
+      if (!free[k + 1] && !free[k]) {  // inside a contact zone: on the tool
+        bNew[k + 1] = s.tool[k + 1];
+        continue;
+      }
       const GO na = s.nodes[k], nb = s.nodes[k + 1];
       const Point ua = velocity(na), ub = velocity(nb);
       // The segment's flux-weighted mean velocity (plain mean in plane strain).
@@ -179,11 +184,25 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
       const Point d = minus(xb, xa);
       const double len = std::hypot(d[0], d[1]);
       const Point segNormal{d[1] / len, -d[0] / len};  // either side: only |ū·n| is used
-      out.maxFlowAngle = std::max(out.maxFlowAngle, std::abs(dot(mean, segNormal)) / speed);
+      const double angle = std::abs(dot(mean, segNormal)) / speed;
       bNew[k + 1] = bNew[k] + (s.along[k + 1] - s.along[k]) * um / uc;
-      if (s.wall >= 0 && bNew[k + 1] > s.tool[k + 1]) {  // into the tool: back on it
+      if (!free[k + 1]) {  // the end of a separated run: reattached, or passing below the node
+        if (bNew[k + 1] < s.tool[k + 1] - gapTolerance && !wall->held(s.wallIndex[k + 1])) {
+          free[k + 1] = 1;
+          out.released.push_back({s.wall, s.wallIndex[k + 1]});
+          out.maxFlowAngle = std::max(out.maxFlowAngle, angle);
+        } else {
+          bNew[k + 1] = s.tool[k + 1];
+        }
+        continue;
+      }
+      if (wall && bNew[k + 1] >= s.tool[k + 1]) {
+        // The streamline reaches the tool: the node goes back on it (where the status loop may
+        // activate it); the segment is where the surface meets the tool, not a streamline.
         bNew[k + 1] = s.tool[k + 1];
         ++out.clampedToTool;
+      } else {
+        out.maxFlowAngle = std::max(out.maxFlowAngle, angle);
       }
     }
     for (size_t k = 0; k < n; ++k) {

@@ -51,7 +51,11 @@ struct ContactWallSettings {
   /// Released Nodes = Free Surface: the wall's released tail is a free surface that leaves the
   /// tool (freesurface/FreeSurface.hpp); upstreamGroup names the group at its upstream end.
   bool releasedFreeSurface = false;
+  bool neverReleased = false;  ///< Released Nodes = Never: bilateral, the status loop releases no node
   std::string upstreamGroup;
+  /// Convex Corners = Closed: the wall's nodes at convex tool corners are held (active, never
+  /// released), so no material crosses the wall's segment there (docs/contact.md).
+  bool closedCorners = false;
 };
 
 /// What a status update decided: the wall node to change, or none (index −1).
@@ -108,7 +112,13 @@ class ContactWall {
   /// angle there is reflex, like the die lip), material moving along the other wall is not
   /// entering the tool: a free node penetrates only if u·n > tolerance for this wall's normal
   /// AND for each normal added here (the tool is the intersection of the half-planes).
-  void addCornerNormal(int k, const std::array<double, 2>& otherNormal) { m_cornerNormals[k].push_back(otherNormal); }
+  /// With Convex Corners = Closed the node is held instead: active, and never released.
+  void addCornerNormal(int k, const std::array<double, 2>& otherNormal) {
+    m_cornerNormals[k].push_back(otherNormal);
+    if (m_settings.closedCorners) m_active[k] = 1;
+  }
+  /// Whether node k is held active at a closed convex corner (no status change).
+  bool held(int k) const { return m_settings.closedCorners && !m_cornerNormals[k].empty(); }
 
   /// What solving changes on a wall: the statuses and their change counts, ν and m, and the
   /// penalty scales. A perturbed solve (the finite-difference check) saves it and restores it

@@ -49,6 +49,8 @@ class FreeSurfaceLoop {
     std::function<std::vector<double>()> velocities;
     std::function<void(const std::vector<std::array<double, 2>>&)> moveNodes;
     std::function<bool(int& newtonIterations, int& contactChanges, std::string& message)> resolve;
+    /// Releases node k of wall w (an active node a separated surface does not reach).
+    std::function<void(int w, int k)> release;
   };
 
   /// `settings` is the validated "Free Surface" sublist.

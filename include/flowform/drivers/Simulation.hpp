@@ -87,6 +87,13 @@ class Simulation {
   /// A block the summary carries as it is under `key` (the adaptive loop's cycles).
   void addSummaryBlock(const std::string& key, const nlohmann::json& block) { m_extraSummary[key] = block; }
   const Mesh& mesh() const { return m_mesh; }
+  /// The mesh with its nodes where the mesher put them (before any free-surface update moved
+  /// them): the geometry of the case's .geo, which a size field for remeshing must cover.
+  Mesh meshAsMade() const {
+    Mesh made = m_mesh;
+    made.coords = m_madeCoords;
+    return made;
+  }
   const DofMap& dofMap() const { return *m_dofMap; }
   const FlowPhysics& physics() const { return m_physics; }
   const Vector& solution() const { return *m_solution; }
@@ -127,6 +134,7 @@ class Simulation {
   Teuchos::ParameterList m_params;
   Teuchos::RCP<const Comm> m_comm;
   Mesh m_mesh;
+  std::vector<std::array<double, 2>> m_madeCoords;  ///< the nodes as the mesher made them
   FlowPhysics m_physics;
   std::vector<ContactWall> m_walls;
   std::unique_ptr<Responses> m_responses;

@@ -43,7 +43,10 @@ struct FreeSurfaceStep {
   std::vector<char> prescribed;     ///< per mesh node: its displacement is boundary data
   double maxFlowAngle = 0.0;        ///< max over surface segments of |ū·n|/|ū| at the current positions
   double maxMove = 0.0;             ///< largest |displacement| of a surface node
-  int clampedToTool = 0;            ///< wall-tail nodes the update put back on their tool
+  int clampedToTool = 0;            ///< free wall nodes the update put back on their tool
+  /// Active wall nodes that a separated surface does not reach (its streamline passes below the
+  /// tool there by more than the gap tolerance): they are released, as {wall, wall node}.
+  std::vector<std::array<int, 2>> released;
   std::string failure;              ///< why no update is possible (the flow turns against the surface)
 };
 
@@ -61,8 +64,10 @@ class FreeSurfaces {
   /// The update at the velocities `u` (replicated, global dof ids: SolutionTransfer replicate()).
   /// Wall tails start at the wall's last active node; tail nodes upstream of it that are off
   /// their tool are put back on it.
+  /// `gapTolerance`: how far below the tool a separated streamline may pass an active node
+  /// before the node is released (a length).
   FreeSurfaceStep step(const Mesh& mesh, const DofMap& dofMap, const std::vector<double>& u,
-                       const std::vector<ContactWall>& walls, Geometry geometry) const;
+                       const std::vector<ContactWall>& walls, Geometry geometry, double gapTolerance) const;
 
   /// Per surface: its name, nodes from its start (wall tails: all wall nodes in flow order).
   struct Surface {
