@@ -42,10 +42,12 @@ FreeSurfaceLoop::FreeSurfaceLoop(const FreeSurfaces& surfaces, const Teuchos::Pa
       m_moveTolerance(settings.get<double>("Move Tolerance")) {}
 
 FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, const std::vector<ContactWall>& walls,
-                                       Geometry geometry, const Hooks& hooks) const {
+                                       Geometry geometry, const Hooks& hooks, double toleranceScale) const {
   const auto start = std::chrono::steady_clock::now();
   FreeSurfaceReport report;
-  const double moveLimit = m_moveTolerance * m_surfaces.lengthScale();
+  const double moveLimit = toleranceScale * m_moveTolerance * m_surfaces.lengthScale();
+  const double angleLimit = toleranceScale * m_angleTolerance;
+  const int maxIterations = toleranceScale < 1.0 ? 3 * m_maxIterations : m_maxIterations;
   for (;;) {
     const FreeSurfaceStep step = m_surfaces.step(mesh, dofMap, hooks.velocities(), walls, geometry, moveLimit);
     if (!step.failure.empty()) {
@@ -61,13 +63,13 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
           << (step.released.empty() ? std::string()
                                     : ", " + std::to_string(step.released.size()) + " contact node(s) not reached")
           << "\n";
-    if (step.maxFlowAngle <= m_angleTolerance && step.maxMove <= moveLimit && step.released.empty()) {
+    if (step.maxFlowAngle <= angleLimit && step.maxMove <= moveLimit && step.released.empty()) {
       report.converged = true;
       break;
     }
-    if (report.iterations >= m_maxIterations) {
-      report.message = "the free surfaces did not converge in Free Surface/Maximum Iterations = " +
-                       std::to_string(m_maxIterations) + " updates (max |u.n|/|u| = " +
+    if (report.iterations >= maxIterations) {
+      report.message = "the free surfaces did not converge in " + std::to_string(maxIterations) +
+                       " updates (Free Surface/Maximum Iterations) (max |u.n|/|u| = " +
                        std::to_string(step.maxFlowAngle) + ", node move " + std::to_string(step.maxMove) + ")";
       break;
     }

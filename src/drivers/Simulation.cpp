@@ -184,7 +184,8 @@ void Simulation::startFrom(const Simulation& other, bool decideZoneLimits) {
   m_warmStart = true;
 }
 
-FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics) {
+FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
+                                                   double toleranceScale) {
   FreeSurfaceLoop::Hooks hooks;
   hooks.velocities = [&] { return replicate(x, *m_dofMap); };
   hooks.moveNodes = [&](const std::vector<std::array<double, 2>>& coords) {
@@ -207,7 +208,7 @@ FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vect
     return r.converged;
   };
   return FreeSurfaceLoop(*m_freeSurfaces, m_params.sublist("Free Surface"))
-      .run(m_mesh, *m_dofMap, m_walls, physics.kernel.geometry, hooks);
+      .run(m_mesh, *m_dofMap, m_walls, physics.kernel.geometry, hooks, toleranceScale);
 }
 
 void Simulation::moveNodes(const std::vector<std::array<double, 2>>& coords) {
@@ -272,7 +273,7 @@ PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double de
     // The same perturbation with the surfaces re-converged: the total derivative's difference.
     const std::vector<std::array<double, 2>> shape = m_mesh.coords;
     Vector moving(*x, Teuchos::Copy);
-    const FreeSurfaceReport surfaces = convergeFreeSurfaces(solver, moving, physics);
+    const FreeSurfaceReport surfaces = convergeFreeSurfaces(solver, moving, physics, kFiniteDifferenceSurfaceTolerance);
     run.newtonIterations += surfaces.newtonIterations;
     if (surfaces.converged) {
       run.movingFunctionals = m_responses->evaluate(moving, m_mesh, *m_dofMap, *m_assembler, m_walls);

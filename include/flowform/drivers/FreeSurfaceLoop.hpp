@@ -56,9 +56,11 @@ class FreeSurfaceLoop {
   /// `settings` is the validated "Free Surface" sublist.
   FreeSurfaceLoop(const FreeSurfaces& surfaces, const Teuchos::ParameterList& settings);
 
-  /// Runs the loop from the converged state the hooks see.
+  /// Runs the loop from the converged state the hooks see. `toleranceScale` < 1 tightens both
+  /// tolerances (and allows 3× the iterations): a finite-difference run with re-converged
+  /// surfaces must resolve shape changes of the order of its step, far below the case's tolerances.
   FreeSurfaceReport run(const Mesh& mesh, const DofMap& dofMap, const std::vector<ContactWall>& walls,
-                        Geometry geometry, const Hooks& hooks) const;
+                        Geometry geometry, const Hooks& hooks, double toleranceScale = 1.0) const;
 
  private:
   const FreeSurfaces& m_surfaces;

@@ -124,7 +124,10 @@ class Simulation {
   NonlinearSolver newtonSolver(bool refreshScales);
   /// The free-surface loop from the converged flow at `physics` (x, the walls and the mesh move);
   /// the re-solves use `solver`.
-  FreeSurfaceReport convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics);
+  FreeSurfaceReport convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
+                                         double toleranceScale = 1.0);
+  /// The free-surface tolerances of a finite-difference run relative to the case's.
+  static constexpr double kFiniteDifferenceSurfaceTolerance = 1e-4;
   /// DDM sensitivities at the converged solution and, when asked, their FD check.
   void runSensitivity();
   /// The solve at h + delta from the converged state, with its contact loop; the case's
