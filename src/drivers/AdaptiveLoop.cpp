@@ -125,6 +125,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
                             {"dofs", sim->dofMap().numGlobalDofs()},
                             {"newton_iterations", sim->report().newtonIterations},
                             {"contact_changes", sim->contactChanges()},
+                            {"free_surface_iterations", sim->freeSurfaceReport().iterations},
                             {"functionals", sim->functionals()},
                             {"error_estimate", estimate.functionals}};
     met = true;

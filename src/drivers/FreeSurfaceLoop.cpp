@@ -31,7 +31,8 @@ void FreeSurfaceReport::report(nlohmann::json& summary) const {
   summary["free_surface"] = {{"converged", converged},      {"iterations", iterations},
                              {"newton_iterations", newtonIterations}, {"contact_changes", contactChanges},
                              {"flow_angle", flowAngle},     {"move", move},
-                             {"seconds", seconds},          {"history", history}};
+                             {"seconds", seconds},          {"motion_seconds", motionSeconds},
+                             {"resolve_seconds", resolveSeconds}, {"history", history}};
   if (!message.empty()) summary["free_surface"]["message"] = message;
 }
 
@@ -48,12 +49,16 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
   const double moveLimit = toleranceScale * m_moveTolerance * m_surfaces.lengthScale();
   const double angleLimit = toleranceScale * m_angleTolerance;
   const int maxIterations = toleranceScale < 1.0 ? 3 * m_maxIterations : m_maxIterations;
+  using Clock = std::chrono::steady_clock;
+  auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   for (;;) {
+    auto t = Clock::now();
     const FreeSurfaceStep step = m_surfaces.step(mesh, dofMap, hooks.velocities(), walls, geometry, moveLimit);
     if (!step.failure.empty()) {
       report.message = "free-surface update impossible: " + step.failure;
       break;
     }
+    report.motionSeconds += since(t);
     report.flowAngle = step.maxFlowAngle;
     report.move = step.maxMove;
     log() << "flowform: free surface " << report.iterations << ": max |u.n|/|u| = " << step.maxFlowAngle
@@ -74,16 +79,23 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
       break;
     }
     for (const auto& [w, k] : step.released) hooks.release(w, k);
+    t = Clock::now();
     try {
       hooks.moveNodes(extendBoundaryDisplacement(mesh, step.displacement, step.prescribed));
     } catch (const InputError& e) {
       report.message = std::string("the free-surface update would invert the mesh: ") + e.what();
       break;
+    } catch (const std::exception& e) {
+      report.message = std::string("the free-surface mesh motion failed: ") + e.what();
+      break;
     }
+    report.motionSeconds += since(t);
     ++report.iterations;
     int newton = 0, changes = 0;
     std::string why;
+    t = Clock::now();
     const bool ok = hooks.resolve(newton, changes, why);
+    report.resolveSeconds += since(t);
     report.newtonIterations += newton;
     report.contactChanges += changes;
     report.history.push_back({{"flow_angle", step.maxFlowAngle}, {"move", step.maxMove},

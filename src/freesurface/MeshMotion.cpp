@@ -5,6 +5,11 @@
 #include <map>
 #include <stdexcept>
 
+#include <Amesos2.hpp>
+#include <Teuchos_DefaultSerialComm.hpp>
+
+#include "flowform/core/TpetraTypes.hpp"
+
 namespace flowform {
 
 namespace {
@@ -12,7 +17,7 @@ namespace {
 /// Symmetric sparse matrix in rows of (column, value), the diagonal included.
 using SparseRows = std::vector<std::map<GO, double>>;
 
-/// Adds the P1 Laplacian of triangle (a, b, c), times `weight`/|K| (the stiffening), to `K`.
+/// Adds the P1 Laplacian of triangle (a, b, c) with the stiffening k = 1/|K|, times `weight`.
 void addTriangle(const Mesh& mesh, GO a, GO b, GO c, double weight, SparseRows& K) {
   const GO v[3] = {a, b, c};
   const auto& p = mesh.coords;
@@ -26,9 +31,9 @@ void addTriangle(const Mesh& mesh, GO a, GO b, GO c, double weight, SparseRows& 
     g[i][0] = (p[j][1] - p[k][1]) / (2.0 * area);
     g[i][1] = (p[k][0] - p[j][0]) / (2.0 * area);
   }
-  const double scale = weight;  // ∫_K k ∇N_i·∇N_j dx = |K| (1/|K|) ∇N_i·∇N_j
+  // ∫_K k ∇N_i·∇N_j dx = |K| (1/|K|) ∇N_i·∇N_j
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) K[v[i]][v[j]] += scale * (g[i][0] * g[j][0] + g[i][1] * g[j][1]);
+    for (int j = 0; j < 3; ++j) K[v[i]][v[j]] += weight * (g[i][0] * g[j][0] + g[i][1] * g[j][1]);
 }
 
 }  // namespace
@@ -45,9 +50,20 @@ std::vector<std::array<double, 2>> extendBoundaryDisplacement(const Mesh& mesh,
       const GO a = mesh.cell(c)[e], b = mesh.cell(c)[(e + 1) % npc];
       ++edgeCount[{std::min(a, b), std::max(a, b)}];
     }
-  std::vector<char> fixed(numNodes, 0);
+  std::vector<char> boundary(numNodes, 0);
   for (const auto& [edge, count] : edgeCount)
-    if (count == 1) fixed[edge.first] = fixed[edge.second] = 1;
+    if (count == 1) boundary[edge.first] = boundary[edge.second] = 1;
+
+  std::vector<std::array<double, 2>> coords = mesh.coords;
+  for (GO i = 0; i < numNodes; ++i)
+    if (prescribed[i]) coords[i] = {coords[i][0] + displacement[i][0], coords[i][1] + displacement[i][1]};
+
+  // Interior unknowns, numbered 0..m−1.
+  std::vector<GO> unknown(numNodes, -1);
+  GO m = 0;
+  for (GO i = 0; i < numNodes; ++i)
+    if (!boundary[i] && !prescribed[i]) unknown[i] = m++;
+  if (m == 0) return coords;
 
   SparseRows K(numNodes);
   for (GO c = 0; c < mesh.numCells(); ++c) {
@@ -62,70 +78,49 @@ std::vector<std::array<double, 2>> extendBoundaryDisplacement(const Mesh& mesh,
     }
   }
 
-  std::vector<std::array<double, 2>> coords = mesh.coords;
+  // K_II d_I = −K_IB d_B (d_B = the prescribed displacement, 0 on the other boundary nodes).
+  auto map = Teuchos::rcp(new Map(m, 0, Teuchos::rcp(new Teuchos::SerialComm<int>())));
+  Teuchos::Array<size_t> rowLength(m, 0);
   for (GO i = 0; i < numNodes; ++i)
-    if (prescribed[i] || fixed[i]) {
-      const double s = prescribed[i] ? 1.0 : 0.0;
-      coords[i] = {coords[i][0] + s * displacement[i][0], coords[i][1] + s * displacement[i][1]};
-    }
-  // Interior unknowns: K_II d_I = −K_IB d_B, one component at a time, by Jacobi-preconditioned CG.
-  for (int comp = 0; comp < 2; ++comp) {
-    std::vector<double> d(numNodes, 0.0), r(numNodes, 0.0), z(numNodes, 0.0), q(numNodes, 0.0), Aq(numNodes, 0.0);
-    for (GO i = 0; i < numNodes; ++i)
-      if (prescribed[i]) d[i] = displacement[i][comp];
-    double rhsNorm = 0.0;
+    if (unknown[i] >= 0)
+      for (const auto& entry : K[i]) rowLength[unknown[i]] += unknown[entry.first] >= 0;
+  auto A = Teuchos::rcp(new CrsMatrix(map, rowLength()));
+  auto rhs = Teuchos::rcp(new MultiVector(map, 2)), d = Teuchos::rcp(new MultiVector(map, 2));
+  {
+    auto b = rhs->getLocalViewHost(Tpetra::Access::OverwriteAll);
+    std::vector<GO> cols;
+    std::vector<double> vals;
     for (GO i = 0; i < numNodes; ++i) {
-      if (fixed[i] || prescribed[i]) continue;
-      double s = 0.0;
-      for (const auto& [j, kij] : K[i])
-        if (fixed[j] || prescribed[j]) s += kij * d[j];
-      r[i] = -s;
-      rhsNorm += r[i] * r[i];
-    }
-    rhsNorm = std::sqrt(rhsNorm);
-    if (rhsNorm == 0.0) continue;
-    auto apply = [&](const std::vector<double>& x, std::vector<double>& y) {
-      for (GO i = 0; i < numNodes; ++i) {
-        if (fixed[i] || prescribed[i]) { y[i] = 0.0; continue; }
-        double s = 0.0;
-        for (const auto& [j, kij] : K[i])
-          if (!(fixed[j] || prescribed[j])) s += kij * x[j];
-        y[i] = s;
+      if (unknown[i] < 0) continue;
+      cols.clear();
+      vals.clear();
+      double r[2] = {0.0, 0.0};
+      for (const auto& [j, kij] : K[i]) {
+        if (unknown[j] >= 0) {
+          cols.push_back(unknown[j]);
+          vals.push_back(kij);
+        } else if (prescribed[j]) {
+          r[0] -= kij * displacement[j][0];
+          r[1] -= kij * displacement[j][1];
+        }
       }
-    };
-    auto precondition = [&](const std::vector<double>& x, std::vector<double>& y) {
-      for (GO i = 0; i < numNodes; ++i) y[i] = (fixed[i] || prescribed[i]) ? 0.0 : x[i] / K[i][i];
-    };
-    std::vector<double> x(numNodes, 0.0);
-    precondition(r, z);
-    q = z;
-    double rz = 0.0;
-    for (GO i = 0; i < numNodes; ++i) rz += r[i] * z[i];
-    const int maxIterations = 10 * static_cast<int>(numNodes) + 100;
-    bool converged = false;
-    for (int it = 0; it < maxIterations; ++it) {
-      apply(q, Aq);
-      double qAq = 0.0;
-      for (GO i = 0; i < numNodes; ++i) qAq += q[i] * Aq[i];
-      const double alpha = rz / qAq;
-      double rr = 0.0;
-      for (GO i = 0; i < numNodes; ++i) {
-        x[i] += alpha * q[i];
-        r[i] -= alpha * Aq[i];
-        rr += r[i] * r[i];
-      }
-      if (std::sqrt(rr) <= 1e-12 * rhsNorm) { converged = true; break; }
-      precondition(r, z);
-      double rzNew = 0.0;
-      for (GO i = 0; i < numNodes; ++i) rzNew += r[i] * z[i];
-      const double beta = rzNew / rz;
-      rz = rzNew;
-      for (GO i = 0; i < numNodes; ++i) q[i] = z[i] + beta * q[i];
+      A->insertGlobalValues(unknown[i], Teuchos::ArrayView<const GO>(cols), Teuchos::ArrayView<const double>(vals));
+      b(unknown[i], 0) = r[0];
+      b(unknown[i], 1) = r[1];
     }
-    if (!converged) throw std::runtime_error("mesh motion: conjugate gradients did not converge");
-    for (GO i = 0; i < numNodes; ++i)
-      if (!(fixed[i] || prescribed[i])) coords[i][comp] += x[i];
   }
+  A->fillComplete();
+  auto solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", A, d, rhs);
+  try {
+    solver->symbolicFactorization();
+    solver->numericFactorization();
+    solver->solve();
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("mesh motion: the Laplacian could not be factored: ") + e.what());
+  }
+  const auto x = d->getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (GO i = 0; i < numNodes; ++i)
+    if (unknown[i] >= 0) coords[i] = {coords[i][0] + x(unknown[i], 0), coords[i][1] + x(unknown[i], 1)};
   return coords;
 }
 

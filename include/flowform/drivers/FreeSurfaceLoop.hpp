@@ -29,7 +29,9 @@ struct FreeSurfaceReport {
   int contactChanges = 0;      ///< of the re-solves' status loops
   double flowAngle = 0.0;      ///< max |ū·n|/|ū| at the returned state
   double move = 0.0;           ///< the update's largest node move at the returned state
-  double seconds = 0.0;
+  double seconds = 0.0;         ///< the whole loop
+  double motionSeconds = 0.0;   ///< of which the surface updates and the mesh motion
+  double resolveSeconds = 0.0;  ///< of which the flow re-solves (with their status loops)
   std::string message;         ///< why it did not converge
   nlohmann::json history = nlohmann::json::array();  ///< per iteration: angle, move, Newton, changes
   /// free_surface_iterations and the "free_surface" block of summary.json.

@@ -5,9 +5,10 @@
 // one scalar problem per component, P1 on the cells (a quadrilateral is split along both
 // diagonals, each half weighted 1/2), with k = 1/|K| on each cell: small cells (the refined die
 // corner) are stiff and move almost rigidly, large cells take the distortion (Tezduyar's
-// Jacobian-based stiffening). Solved by conjugate gradients with the diagonal as
-// preconditioner to a relative residual of 10⁻¹²; the mesh is replicated, so every rank solves
-// the same small system and gets the same coordinates.
+// Jacobian-based stiffening). The interior system (both components as two right-hand sides)
+// is solved directly, by KLU2 on a serial matrix: the mesh is replicated, so every rank solves
+// the same system and gets the same coordinates. (Conjugate gradients took 15 of the 17 s of an
+// 84 000-dof die swell, docs/BENCHMARKS.md §12.)
 #pragma once
 
 #include <array>
