@@ -1,0 +1,126 @@
+// The pieces of the free-surface update (docs/theory.md §8), without a flow solve:
+// - the mesh motion reproduces an affine boundary displacement exactly inside a uniform mesh
+//   (the harmonic extension of an affine field is that field, and with equal cell areas the
+//   1/|K| stiffening is a constant factor), triangles and quadrilaterals; nodes of boundary
+//   groups that are not moved stay;
+// - the spine update at a uniform velocity u = (1, s) makes a flat surface the straight line of
+//   slope s from its fixed start in one step (every segment parallel to u), reports the flow
+//   angle of the flat surface (s / √(1 + s²)), drags the group at the surface's end in proportion
+//   to its arc length, and at the next step finds the flow angle and the move zero;
+// - a Start Group that shares no end of the surface is an input error naming it.
+// Round-off bounds: 1e-12 (direct solve of a 100-node system, coordinates of order 1).
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_UnitTestHarness.hpp>
+#include <cmath>
+
+#include "StructuredMesh.hpp"
+#include "flowform/core/InputError.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/freesurface/FreeSurface.hpp"
+#include "flowform/freesurface/MeshMotion.hpp"
+
+namespace {
+
+using namespace flowform;
+
+Mesh unitMesh(CellType type, int nx, int ny) {
+  return test::structuredMesh(type, nx, ny, "structured", [&](int i, int j) {
+    return std::array<double, 2>{2.0 * i / nx, 1.0 * j / ny};
+  });
+}
+
+std::array<double, 2> affine(const std::array<double, 2>& x) {
+  return {0.05 * x[0] - 0.03 * x[1] + 0.01, 0.02 * x[0] + 0.07 * x[1] - 0.02};
+}
+
+TEUCHOS_UNIT_TEST(FreeSurface, MeshMotionReproducesAffineDisplacement) {
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4}) {
+    const Mesh mesh = unitMesh(type, 8, 6);
+    std::vector<std::array<double, 2>> d(mesh.numNodes(), {0.0, 0.0});
+    std::vector<char> prescribed(mesh.numNodes(), 0);
+    for (const BoundaryGroup& g : mesh.boundaries)
+      for (const auto& e : g.edges)
+        for (GO n : e) {
+          d[n] = affine(mesh.coords[n]);
+          prescribed[n] = 1;
+        }
+    const auto moved = extendBoundaryDisplacement(mesh, d, prescribed);
+    double worst = 0.0;
+    for (GO n = 0; n < mesh.numNodes(); ++n) {
+      const auto expected = affine(mesh.coords[n]);
+      for (int c = 0; c < 2; ++c) worst = std::max(worst, std::abs(moved[n][c] - mesh.coords[n][c] - expected[c]));
+    }
+    TEST_COMPARE(worst, <, 1e-12);
+  }
+}
+
+TEUCHOS_UNIT_TEST(FreeSurface, UnmovedBoundaryStaysAndInteriorFollows) {
+  const Mesh mesh = unitMesh(CellType::Triangle3, 8, 6);
+  std::vector<std::array<double, 2>> d(mesh.numNodes(), {0.0, 0.0});
+  std::vector<char> prescribed(mesh.numNodes(), 0);
+  for (const auto& e : mesh.boundary("top").edges)
+    for (GO n : e) {
+      d[n] = {0.0, 0.1};
+      prescribed[n] = 1;
+    }
+  const auto moved = extendBoundaryDisplacement(mesh, d, prescribed);
+  for (const char* name : {"bottom", "left", "right"})
+    for (const auto& e : mesh.boundary(name).edges)
+      for (GO n : e)
+        if (!prescribed[n]) TEST_COMPARE(std::hypot(moved[n][0] - mesh.coords[n][0], moved[n][1] - mesh.coords[n][1]), ==, 0.0);
+  // An interior node half-way up moves up, by less than the top.
+  const GO middle = 3 * 9 + 4;
+  TEST_COMPARE(moved[middle][1] - mesh.coords[middle][1], >, 0.0);
+  TEST_COMPARE(moved[middle][1] - mesh.coords[middle][1], <, 0.1);
+}
+
+/// A "Free Surface" on top from its end at "left"; the replicated dof vector of u = (1, s), p = 0.
+struct SpineCase {
+  Mesh mesh = unitMesh(CellType::Triangle3, 8, 4);
+  Teuchos::ParameterList bc;
+  std::unique_ptr<DofMap> dofMap;
+  std::vector<double> u;
+  explicit SpineCase(double slope) {
+    bc.sublist("top").set("Type", "Free Surface");
+    bc.sublist("top").set("Start Group", "left");
+    dofMap = std::make_unique<DofMap>(mesh, Teuchos::DefaultComm<int>::getComm());
+    u.assign(dofMap->numGlobalDofs(), 0.0);
+    for (GO n = 0; n < mesh.numNodes(); ++n) {
+      u[dofMap->globalDof(n, kUx)] = 1.0;
+      u[dofMap->globalDof(n, kUy)] = slope;
+    }
+  }
+};
+
+TEUCHOS_UNIT_TEST(FreeSurface, SpineUpdateFollowsUniformFlow) {
+  const double slope = 0.1;
+  SpineCase c(slope);
+  const FreeSurfaces surfaces(c.bc, c.mesh, {});
+  TEST_EQUALITY(surfaces.surfaces().size(), 1u);
+  const FreeSurfaceStep step = surfaces.step(c.mesh, *c.dofMap, c.u, {}, Geometry::PlaneStrain, 1e-9);
+  TEST_ASSERT(step.failure.empty());
+  TEST_FLOATING_EQUALITY(step.maxFlowAngle, slope / std::sqrt(1.0 + slope * slope), 1e-12);
+  // The surface's nodes (top, y = 1) go to y = 1 + slope x; the right side's nodes in proportion.
+  for (const auto& e : c.mesh.boundary("top").edges)
+    for (GO n : e) TEST_FLOATING_EQUALITY(step.displacement[n][1] + 1.0, 1.0 + slope * c.mesh.coords[n][0], 1e-12);
+  for (const auto& e : c.mesh.boundary("right").edges)
+    for (GO n : e) TEST_FLOATING_EQUALITY(step.displacement[n][1] + 1.0, 1.0 + 2.0 * slope * c.mesh.coords[n][1], 1e-12);
+  TEST_FLOATING_EQUALITY(step.maxMove, 2.0 * slope, 1e-12);
+
+  // Moved there, the next update finds the surface a streamline: nothing to move.
+  Mesh moved = c.mesh;
+  moved.setCoordinates(extendBoundaryDisplacement(c.mesh, step.displacement, step.prescribed));
+  const FreeSurfaceStep next = surfaces.step(moved, *c.dofMap, c.u, {}, Geometry::PlaneStrain, 1e-9);
+  TEST_COMPARE(next.maxFlowAngle, <, 1e-12);
+  TEST_COMPARE(next.maxMove, <, 1e-12);
+}
+
+TEUCHOS_UNIT_TEST(FreeSurface, StartGroupMustShareAnEnd) {
+  SpineCase c(0.0);
+  c.bc.sublist("top").set("Start Group", "bottom");
+  TEST_THROW(FreeSurfaces(c.bc, c.mesh, {}), InputError);
+  c.bc.sublist("top").set("Start Group", "nowhere");
+  TEST_THROW(FreeSurfaces(c.bc, c.mesh, {}), InputError);
+}
+
+}  // namespace
