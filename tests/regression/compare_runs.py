@@ -39,6 +39,10 @@ def main():
         diff = np.abs(x - y).max() / scale
         print(f"{name}: max |serial - np{nprocs}| / max |serial| = {diff:.3e}")
         failed |= not diff <= TOL
+    # The node positions (moved by a free-surface loop: every rank must move its copy alike).
+    diff = np.abs(a.xy - b.xy).max() / max(np.abs(a.xy).max(), 1e-300)
+    print(f"node positions: max |serial - np{nprocs}| / max |serial| = {diff:.3e}")
+    failed |= not diff <= TOL
     # The error estimates, when the case asks for them (the refined solve runs on the same ranks).
     sa, sb = summary.load(serial_dir) or {}, summary.load(parallel_dir) or {}
     for name, eta in (sa.get("functionals_error_estimate") or {}).items():
