@@ -1,5 +1,6 @@
 #include "flowform/drivers/FreeSurfaceLoop.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -20,6 +21,11 @@ Teuchos::RCP<const Teuchos::ParameterList> FreeSurfaceLoop::validParameters() {
   valid->set("Flow Angle Tolerance", 1e-4,
              "converged when max |u·n|/|u| over the surface segments (u the segment's mean velocity) is below this",
              Teuchos::rcp(new EnhancedNumberValidator<double>(1e-14, 1.0)));
+  Teuchos::setStringToIntegralParameter<int>(
+      "Relaxation", "Aitken",
+      "None: every update moves the surface nodes onto the streamline of the current flow (the paper's); Aitken: "
+      "they move by ω times that, ω from Aitken's Δ² rule on successive updates (docs/theory.md §8)",
+      Teuchos::tuple<std::string>("None", "Aitken"), valid.get());
   valid->set("Move Tolerance", 1e-4,
              "and when the largest node move of the next update is below this fraction of the surface's length",
              Teuchos::rcp(new EnhancedNumberValidator<double>(1e-14, 1.0)));
@@ -40,7 +46,8 @@ FreeSurfaceLoop::FreeSurfaceLoop(const FreeSurfaces& surfaces, const Teuchos::Pa
     : m_surfaces(surfaces),
       m_maxIterations(settings.get<int>("Maximum Iterations")),
       m_angleTolerance(settings.get<double>("Flow Angle Tolerance")),
-      m_moveTolerance(settings.get<double>("Move Tolerance")) {}
+      m_moveTolerance(settings.get<double>("Move Tolerance")),
+      m_aitken(settings.get<std::string>("Relaxation") == "Aitken") {}
 
 FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, const std::vector<ContactWall>& walls,
                                        Geometry geometry, const Hooks& hooks, double toleranceScale) const {
@@ -51,14 +58,35 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
   const int maxIterations = toleranceScale < 1.0 ? 3 * m_maxIterations : m_maxIterations;
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  // Aitken's Δ² relaxation (Irons–Tuck form): with r_k the plain update's residual,
+  //   ω_k = −ω_{k−1} r_{k−1}·(r_k − r_{k−1}) / |r_k − r_{k−1}|²,
+  // clamped to [kMinRelaxation, kMaxRelaxation]; reset to 1 when the surfaces' node sets change
+  // (a contact status changed the runs).
+  double relaxation = 1.0;
+  std::vector<double> previousResidual;
   for (;;) {
     auto t = Clock::now();
-    const FreeSurfaceStep step = m_surfaces.step(mesh, dofMap, hooks.velocities(), walls, geometry, moveLimit);
+    FreeSurfaceStep step = m_surfaces.step(mesh, dofMap, hooks.velocities(), walls, geometry, moveLimit);
     if (!step.failure.empty()) {
       report.message = "free-surface update impossible: " + step.failure;
       break;
     }
     report.motionSeconds += since(t);
+    if (m_aitken) {
+      if (previousResidual.size() == step.residual.size() && step.released.empty()) {
+        double num = 0.0, den = 0.0;
+        for (size_t i = 0; i < step.residual.size(); ++i) {
+          const double dr = step.residual[i] - previousResidual[i];
+          num += previousResidual[i] * dr;
+          den += dr * dr;
+        }
+        relaxation = den > 0.0 ? std::clamp(-relaxation * num / den, kMinRelaxation, kMaxRelaxation) : 1.0;
+      } else {
+        relaxation = 1.0;
+      }
+      previousResidual = step.residual;
+      step.relax(relaxation);
+    }
     report.flowAngle = step.maxFlowAngle;
     report.move = step.maxMove;
     log() << "flowform: free surface " << report.iterations << ": max |u.n|/|u| = " << step.maxFlowAngle
@@ -98,7 +126,7 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     report.resolveSeconds += since(t);
     report.newtonIterations += newton;
     report.contactChanges += changes;
-    report.history.push_back({{"flow_angle", step.maxFlowAngle}, {"move", step.maxMove},
+    report.history.push_back({{"flow_angle", step.maxFlowAngle}, {"move", step.maxMove}, {"relaxation", relaxation},
                               {"clamped_to_tool", step.clampedToTool}, {"released", step.released.size()},
                               {"newton_iterations", newton},
                               {"contact_changes", changes}});

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "flowform/core/InputError.hpp"
 #include "flowform/mesh/BoundaryCurve.hpp"
@@ -131,6 +132,20 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
   if (m_lengthScale <= 0.0) m_lengthScale = 1.0;
 }
 
+void FreeSurfaceStep::relax(double omega) {
+  for (const Move& m : moves) {
+    const double db = std::min(omega * m.residual, m.room);  // never into the tool
+    displacement[m.node] = {db * m.normal[0], db * m.normal[1]};
+    prescribed[m.node] = 1;
+  }
+  for (const Drag& d : drags) {
+    const Move& end = moves[d.end];
+    const double db = d.fraction * std::min(omega * end.residual, end.room);
+    displacement[d.node] = {db * d.normal[0], db * d.normal[1]};
+    prescribed[d.node] = 1;
+  }
+}
+
 FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const std::vector<double>& u,
                                    const std::vector<ContactWall>& walls, Geometry geometry,
                                    double gapTolerance) const {
@@ -151,7 +166,7 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
     // gapTolerance) is not touched by the material: it is released and the run goes on through it.
     const ContactWall* wall = s.wall >= 0 ? &walls[s.wall] : nullptr;
     std::vector<double> bNew = b;
-    std::vector<char> free(n, 1);
+    std::vector<char> free(n, 1);  // per surface node
     if (wall)
       for (size_t k = 0; k < n; ++k) free[k] = !wall->isActive(s.wallIndex[k]);
     for (size_t k = 0; k + 1 < n; ++k) {
@@ -205,19 +220,19 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
         out.maxFlowAngle = std::max(out.maxFlowAngle, angle);
       }
     }
+    // The update's residual is bNew − b; relax() moves the nodes by ω times it.
+    const size_t first = out.moves.size();
     for (size_t k = 0; k < n; ++k) {
-      const double db = bNew[k] - b[k];
-      out.displacement[s.nodes[k]] = {db * s.normal[0], db * s.normal[1]};
-      out.prescribed[s.nodes[k]] = 1;
-      out.maxMove = std::max(out.maxMove, std::abs(db));
+      const double residual = bNew[k] - b[k];
+      out.residual.push_back(residual);
+      out.maxMove = std::max(out.maxMove, std::abs(residual));
+      const double room = wall ? s.tool[k] - b[k] : std::numeric_limits<double>::infinity();
+      out.moves.push_back({s.nodes[k], s.normal, residual, room});
     }
-    const double dEnd = bNew[n - 1] - b[n - 1];
-    for (size_t k = 0; k < s.dragged.size(); ++k) {
-      const double f = s.dragFraction[k];
-      out.displacement[s.dragged[k]] = {f * dEnd * s.normal[0], f * dEnd * s.normal[1]};
-      out.prescribed[s.dragged[k]] = 1;
-    }
+    for (size_t k = 0; k < s.dragged.size(); ++k)
+      out.drags.push_back({s.dragged[k], s.normal, s.dragFraction[k], first + n - 1});
   }
+  out.relax(1.0);
   return out;
 }
 

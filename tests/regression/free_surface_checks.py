@@ -8,7 +8,7 @@ usage: free_surface_checks.py FLOWFORM SOURCE_DIR WORKDIR
    literature's converged values spread over 1.186-1.19 and 1.127-1.13; the mesh study of
    docs/BENCHMARKS.md §12 gives 1.1984, 1.1910, 1.1891, 1.1878 (h = 0.2 ... 0.025, planar) and
    1.1369, 1.1305, 1.1289, 1.1277: 0.01 covers the discretization error at h = 0.1 (<= 0.004)
-   and the spread. At most 15 surface updates (measured 9).
+   and the spread. At most 15 surface updates (measured 4 with Aitken's relaxation, 9 without).
    The swell converges under refinement: |s(0.1) - s(0.05)| < |s(0.2) - s(0.1)| (0.0019 < 0.0074).
 2. Conservation on the moved mesh. The pressure equation tested with q = 1 makes the boundary
    fluxes sum to zero exactly (the stabilization term vanishes for constant q): inflow + outflow +
@@ -23,8 +23,11 @@ usage: free_surface_checks.py FLOWFORM SOURCE_DIR WORKDIR
    reason in the summary's message, free_surface_iterations = 2.
 5. Extrusion with a separating die land (xml/extrusion_separation.xml on the paper's mesh): exit 0,
    a gap is reported (> 0), at most 15 updates; what leaves through the outlet is what the ram
-   pushes in up to the normal penalty's penetration, which falls with it: |outflow + inflow| <=
-   1e-3 at kappa_n = 1e3 (measured 4.5e-4) and <= 1e-5 at 1e5 (1.1e-6). The paper's open corner
+   pushes in up to the normal penalty's penetration of the walls in contact, which falls with it,
+   and what the land lets through, which the flow-angle tolerance bounds (tol * |u| * L, |u| = 2,
+   L = 1.5): |outflow + inflow| <= 1e-3 at kappa_n = 1e3 (measured 4.6e-4) and <= 1e-5 at 1e5 with
+   the surface tolerances at 1e-7, 1e-8 (4.5e-6: die face 1.0e-6 and container 3.5e-6 by
+   penetration, land 2e-9). The paper's open corner
    (xml/extrusion.xml) loses more than 1 % there (measured 2.4 %: the die-lip leak).
    Adaptive (the scene as shipped, 0.5 % target) against the bilateral land (Released Nodes =
    Never): both meet the target and agree within the sum of their error estimates (measured
@@ -102,16 +105,20 @@ def main():
                     f"cap: exit {status}, {s.get('free_surface_iterations')} updates, message '{s.get('message')}'")
 
     separation = os.path.join(source, "xml/extrusion_separation.xml")
-    for kappa, bound in (("1e3", 1e-3), ("1e5", 1e-5)):
-        sets = NO_FILES + ["Adaptivity/Enabled=false"] + [
+    for kappa, bound, tolerances in (("1e3", 1e-3, []), ("1e5", 1e-5, ["Free Surface/Flow Angle Tolerance=1e-7",
+                                                                          "Free Surface/Move Tolerance=1e-8"])):
+        sets = NO_FILES + tolerances + ["Adaptivity/Enabled=false", "Responses/land/Type=Flow Rate",
+                                        "Responses/land/Boundary=die_land"] + [
             f"Boundary Conditions/{w}/Normal Penalty Factor={kappa}" for w in ("container", "die_face", "die_land")]
         status, s = solve(flowform, separation, os.path.join(work, f"separation_{kappa}"), sets)
         f = s.get("functionals") or {}
         leak = f["outflow"] + f["inflow"] if status == 0 else None
-        failed += check(status == 0 and abs(leak) <= bound and f.get("gap", 0.0) > 0.0
+        # Through the land: at most the flow-angle tolerance times |u| (2) times its length (1.5).
+        land_bound = 3.0 * (1e-7 if tolerances else 1e-4)
+        failed += check(status == 0 and abs(leak) <= bound and abs(f["land"]) <= land_bound and f.get("gap", 0.0) > 0.0
                         and 1 <= s.get("free_surface_iterations", 0) <= 15,
-                        f"separating land, kappa_n = {kappa}: outflow + inflow = {leak}, gap {f.get('gap')}, "
-                        f"{s.get('free_surface_iterations')} updates, exit {status}")
+                        f"separating land, kappa_n = {kappa}: outflow + inflow = {leak}, through the land "
+                        f"{f.get('land')}, gap {f.get('gap')}, {s.get('free_surface_iterations')} updates, exit {status}")
     status, s = solve(flowform, os.path.join(source, "xml/extrusion.xml"), os.path.join(work, "open_corner"),
                       NO_FILES + ["Adaptivity/Enabled=false", "Responses/inflow/Type=Flow Rate",
                                   "Responses/inflow/Boundary=ram", "Responses/outflow/Type=Flow Rate",

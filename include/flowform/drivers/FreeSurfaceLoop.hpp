@@ -65,9 +65,11 @@ class FreeSurfaceLoop {
                         Geometry geometry, const Hooks& hooks, double toleranceScale = 1.0) const;
 
  private:
+  static constexpr double kMinRelaxation = 0.1, kMaxRelaxation = 3.0;  ///< Aitken's ω kept in here
   const FreeSurfaces& m_surfaces;
   int m_maxIterations;
   double m_angleTolerance, m_moveTolerance;
+  bool m_aitken;
 };
 
 }  // namespace flowform

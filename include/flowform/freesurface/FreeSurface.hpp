@@ -38,11 +38,30 @@ namespace flowform {
 /// One update of every free surface from the current velocity field.
 struct FreeSurfaceStep {
   /// Per mesh node: the displacement the update gives to surface nodes and to the nodes of the
-  /// groups they drag (zero elsewhere; the mesh motion spreads it to the interior).
+  /// groups they drag (zero elsewhere; the mesh motion spreads it to the interior): ω times the
+  /// residual (relax(ω); the step comes with ω = 1).
   std::vector<std::array<double, 2>> displacement;
   std::vector<char> prescribed;     ///< per mesh node: its displacement is boundary data
+  /// A surface node's move along its spine: b_update − b, and how far it may go before the tool.
+  struct Move {
+    GO node;
+    std::array<double, 2> normal;
+    double residual, room;
+  };
+  /// A node of a group dragged by a surface's end (moves[end]), by its arc-length fraction.
+  struct Drag {
+    GO node;
+    std::array<double, 2> normal;
+    double fraction;
+    size_t end;
+  };
+  std::vector<Move> moves;
+  std::vector<Drag> drags;
+  /// Sets the displacements to ω times the residuals (no node past its tool).
+  void relax(double omega);
   double maxFlowAngle = 0.0;        ///< max over surface segments of |ū·n|/|ū| at the current positions
-  double maxMove = 0.0;             ///< largest |displacement| of a surface node
+  double maxMove = 0.0;             ///< largest |residual|: the move of the plain (unrelaxed) update
+  std::vector<double> residual;     ///< per surface node (all surfaces in order): b_update − b
   int clampedToTool = 0;            ///< free wall nodes the update put back on their tool
   /// Active wall nodes that a separated surface does not reach (its streamline passes below the
   /// tool there by more than the gap tolerance): they are released, as {wall, wall node}.
