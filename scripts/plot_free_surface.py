@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots of runs with free surfaces (docs/theory.md §8) from flowform's outputs.
+"""Plots of runs with free surfaces (docs/theory.md §3) from flowform's outputs.
 
   free_surface_<run>.png   |u| on the converged (moved) mesh with the free surfaces drawn over it,
                            and the loop's history: max |u.n|/|u| and the largest node move per

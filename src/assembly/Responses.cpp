@@ -232,7 +232,7 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
       }
       values[r.name] = sumOverRanks(comm, local);
     } else if (r.type == "Boundary Extent") {
-      // Node positions do not depend on q: no derivative on a frozen shape (docs/theory.md §8).
+      // Node positions do not depend on q: no derivative on a frozen shape (docs/theory.md §3).
       double extent = -std::numeric_limits<double>::max();
       for (const auto& e : mesh.boundary(r.boundary).edges)
         for (GO n : e) extent = std::max(extent, mesh.coords[n][r.component == "X" ? 0 : 1]);

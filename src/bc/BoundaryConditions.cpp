@@ -85,7 +85,7 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParamet
         "velocity on a straight boundary; Traction: prescribed traction (default zero: free). "
         "Traction X/Y act on any type, on the components it leaves free. Contact Wall: a frictional "
         "tool wall (its parameters: contact/ContactWall.hpp). Free Surface: traction-free, moved until it is a "
-        "streamline (freesurface/FreeSurface.hpp, docs/theory.md §8)",
+        "streamline (freesurface/FreeSurface.hpp, docs/theory.md §3)",
         Teuchos::tuple<std::string>("Velocity", "Symmetry", "Traction", "Contact Wall", "Free Surface"), valid.get());
     valid->set("Velocity X", 0.0, "prescribed u_x (Velocity type; omit to leave u_x free)");
     valid->set("Velocity Y", 0.0, "prescribed u_y (Velocity type; omit to leave u_y free)");

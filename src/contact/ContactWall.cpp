@@ -46,7 +46,7 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
       "Released Nodes", "Fixed",
       "Fixed: released nodes stay on the tool, traction-free (the paper's contact element); Free Surface: the "
       "released tail downstream of the last active node is a free surface that leaves the tool and becomes a "
-      "streamline (docs/theory.md §8; needs Start Group); Never: a bilateral wall, no node is released",
+      "streamline (docs/theory.md §3; needs Start Group); Never: a bilateral wall, no node is released",
       Teuchos::tuple<std::string>("Fixed", "Free Surface", "Never"), valid.get());
   Teuchos::setStringToIntegralParameter<int>(
       "Convex Corners", "Open",

@@ -168,7 +168,7 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   contact.set("Pressure Tolerance", 1e-3, "an active node is released when p < -this [stress]", nonNegative);
   contact.set("Penetration Tolerance", 1e-4, "a free node is activated when u·n > this [velocity]", nonNegative);
   valid->set("Free Surface", *FreeSurfaceLoop::validParameters(),
-             "the loop that makes free surfaces streamlines (docs/theory.md §8); used only when a boundary group is "
+             "the loop that makes free surfaces streamlines (docs/theory.md §3); used only when a boundary group is "
              "a Free Surface or a Contact Wall's Released Nodes are Free Surface");
   valid->set("Sensitivity", *Sensitivity::validParameters(),
              "sensitivities by direct differentiation and their finite-difference check (docs/theory.md §4)");

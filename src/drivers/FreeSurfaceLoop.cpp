@@ -24,7 +24,7 @@ Teuchos::RCP<const Teuchos::ParameterList> FreeSurfaceLoop::validParameters() {
   Teuchos::setStringToIntegralParameter<int>(
       "Relaxation", "Aitken",
       "None: every update moves the surface nodes onto the streamline of the current flow (the paper's); Aitken: "
-      "they move by ω times that, ω from Aitken's Δ² rule on successive updates (docs/theory.md §8)",
+      "they move by ω times that, ω from Aitken's Δ² rule on successive updates (docs/theory.md §3)",
       Teuchos::tuple<std::string>("None", "Aitken"), valid.get());
   valid->set("Move Tolerance", 1e-4,
              "and when the largest node move of the next update is below this fraction of the surface's length",

@@ -44,7 +44,7 @@ Teuchos::RCP<const Teuchos::ParameterList> validFreeSurfaceParameters() {
   static Teuchos::RCP<Teuchos::ParameterList> valid;
   if (!valid.is_null()) return valid;
   valid = Teuchos::rcp(new Teuchos::ParameterList("Free Surface"));
-  valid->set("Type", "Free Surface", "a traction-free boundary that becomes a streamline (docs/theory.md §8)");
+  valid->set("Type", "Free Surface", "a traction-free boundary that becomes a streamline (docs/theory.md §3)");
   valid->set("Start Group", "",
              "the boundary group that shares the surface's fixed start (the die wall at a die exit)");
   return valid;

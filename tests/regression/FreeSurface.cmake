@@ -1,4 +1,4 @@
-# Free surfaces (docs/theory.md §8): Newtonian die swell against Tanner's values, conservation
+# Free surfaces (docs/theory.md §3): Newtonian die swell against Tanner's values, conservation
 # and power on the moved mesh, the shear-thinning trend, the iteration cap, the extrusion with a
 # separating die land (leak, gap, adaptive force against the bilateral land), sensitivities on a
 # moving shape, bad input.

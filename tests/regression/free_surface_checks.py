@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Free surfaces that become streamlines (docs/theory.md §8).
+"""Free surfaces that become streamlines (docs/theory.md §3).
 
 usage: free_surface_checks.py FLOWFORM SOURCE_DIR WORKDIR
 

@@ -1,3 +1,3 @@
 # The free-surface update without a flow solve: mesh motion (affine exactness), the spine
-# update at a uniform velocity, input errors (docs/theory.md §8).
+# update at a uniform velocity, input errors (docs/theory.md §3).
 flowform_unit_test(FreeSurfaceTest unit/FreeSurfaceTest.cpp)

@@ -1,4 +1,4 @@
-// The pieces of the free-surface update (docs/theory.md §8), without a flow solve:
+// The pieces of the free-surface update (docs/theory.md §3), without a flow solve:
 // - the mesh motion reproduces an affine boundary displacement exactly inside a uniform mesh
 //   (the harmonic extension of an affine field is that field, and with equal cell areas the
 //   1/|K| stiffening is a constant factor), triangles and quadrilaterals; nodes of boundary

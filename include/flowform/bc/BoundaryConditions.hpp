@@ -2,6 +2,8 @@
 //   Velocity   — one or both components prescribed ("Velocity X", "Velocity Y")
 //   Symmetry   — zero normal velocity on a straight boundary of any orientation
 //   Traction   — a given traction vector t̄ ("Traction X", "Traction Y"; default 0 = free)
+// Contact Wall and Free Surface groups are validated and handled elsewhere (contact/,
+// freesurface/); here they are skipped (a free surface is traction-free).
 // A traction given on a Velocity or Symmetry group loads its free component (a mixed
 // condition, e.g. u_y = 0 with a normal traction at a channel inlet).
 // Groups the case does not name are traction-free.

@@ -1,4 +1,4 @@
-// The loop that makes free surfaces streamlines (docs/theory.md §8, paper §2.1): from a converged
+// The loop that makes free surfaces streamlines (docs/theory.md §3, paper §2.1): from a converged
 // flow (contact statuses settled), update every free surface from the velocity field
 // (FreeSurfaces::step), move the interior nodes (extendBoundaryDisplacement), re-solve the flow
 // from the previous solution with its contact-status loop, and repeat until

@@ -1,13 +1,15 @@
-// Free surfaces that become streamlines (docs/theory.md §8, paper §2.1): a boundary part with
+// Free surfaces that become streamlines (docs/theory.md §3, paper §2.1): a boundary part with
 // zero traction on which the converged flow must satisfy u·n = 0.
 //
 // Two kinds, both with a fixed start:
 //   - a "Free Surface" group (e.g. the jet after a die exit): its nodes from the end it shares
 //     with its Start Group (the die wall), which stays put;
-//   - the released tail of a contact wall whose "Released Nodes" are "Free Surface" (the die
-//     land): the nodes downstream of the wall's last active node, which is the separation
-//     point and moves with the contact status. The tool stays where it is: a tail node that
-//     would enter it is put back on it (gap 0), where the status loop may activate it.
+//   - a contact wall whose "Released Nodes" are "Free Surface" (the die land): every run of its
+//     free nodes starts at the node before it (the separation point, the last node in contact,
+//     or the wall's upstream end, shared with its Start Group) and follows the contact status.
+//     The tool stays where it is: a node that would enter it is put back on it (gap 0), where
+//     the status loop may activate it; an active node that a separated run passes below is
+//     released.
 //
 // The update (spines): each surface node keeps its coordinate a along the chord direction c of
 // the surface as made (start → end), and its coordinate b along the outward normal m ⊥ c is

@@ -1,4 +1,4 @@
-// Mesh motion for moving boundaries (docs/theory.md §8): the displacement given at some
+// Mesh motion for moving boundaries (docs/theory.md §3): the displacement given at some
 // boundary nodes (a free-surface update) is spread to the interior as the solution of a
 // Laplace problem with stiffening,
 //     −div(k ∇d) = 0 in Ω,  d = given on the moved boundary nodes,  d = 0 on every other boundary node,

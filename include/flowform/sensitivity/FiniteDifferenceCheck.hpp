@@ -14,7 +14,7 @@
 // With free surfaces the DDM differentiates on the frozen (converged) shape; the runs at h ± δ
 // are then made twice: on the frozen shape (the check of the DDM) and with the surfaces
 // re-converged (fd_moving_shape: the total derivative), and the entry reports the gap between
-// the two (docs/theory.md §8).
+// the two (docs/theory.md §3).
 //
 // A run that does not converge makes its entries "not_converged" and the run's exit status
 // 3 (the primal results and the DDM sensitivities are still valid and written).
