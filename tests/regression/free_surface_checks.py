@@ -38,6 +38,8 @@ usage: free_surface_checks.py FLOWFORM SOURCE_DIR WORKDIR
    surfaces re-converged.
 7. Bad input exits 2 and writes nothing: a Start Group that shares no end of the surface, one the
    mesh does not have, Released Nodes = Free Surface without a Start Group.
+8. scripts/plot_free_surface.py draws the planar swell (|u| and history, the surfaces): exit 0,
+   both PNGs written (> 10 kB: not empty figures).
 """
 import os
 import sys
@@ -64,9 +66,10 @@ def main():
     swell = {}
     for scene, tanner, key in (("xml/die_swell.xml", 1.19, "plane"), ("xml/die_swell_axisym.xml", 1.13, "axisym")):
         for h in ("0.2", "0.1", "0.05") if key == "plane" else ("0.1",):
+            files = [] if (key, h) == ("plane", "0.1") else NO_FILES  # this one is plotted (8.)
             status, s = solve(flowform, os.path.join(source, scene), os.path.join(work, f"swell_{key}_{h}"),
-                              NO_FILES + [f"Mesh/Geo Parameters/h={h}", "Responses/plastic/Type=Plastic Power",
-                                          "Responses/stab/Type=Stabilization Power"])
+                              files + [f"Mesh/Geo Parameters/h={h}", "Responses/plastic/Type=Plastic Power",
+                                       "Responses/stab/Type=Stabilization Power"])
             f = s.get("functionals") or {}
             swell[(key, h)] = f.get("swell")
             if h != "0.1":
@@ -157,6 +160,13 @@ def main():
     out = os.path.join(work, "bad_wall_without_start")
     run = launcher.run(flowform, separation, out, ["Boundary Conditions/die_land/Start Group="], quiet=True, clean=True)
     failed += check(run.status == 2 and not os.path.exists(out), f"bad input wall without Start Group: exit {run.status}")
+
+    plots = os.path.join(work, "plots")
+    run = launcher.run_command([sys.executable, os.path.join(source, "scripts/plot_free_surface.py"),
+                                os.path.join(work, "swell_plane_0.1"), "--out", plots], capture=True)
+    made = [os.path.join(plots, f) for f in ("free_surface_swell_plane_0.1.png", "surfaces.png")]
+    failed += check(run.status == 0 and all(os.path.isfile(f) and os.path.getsize(f) > 10000 for f in made),
+                    f"plot_free_surface.py: exit {run.status}, {made}")
 
     print("FAILED" if failed else "PASSED")
     return 1 if failed else 0
