@@ -1,5 +1,6 @@
 #include "flowform/assembly/Responses.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -37,6 +38,16 @@ Teuchos::RCP<const Teuchos::ParameterList> Responses::validParameters() {
              Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
   valid->set("Reference Speed", 1.0, "Dead Zone: the process speed (e.g. the ram's) [velocity]");
   return valid;
+}
+
+void Responses::checkWalls(const std::vector<ContactWall>& walls) const {
+  for (const Response& r : m_responses) {
+    if (r.type != "Wall Gap") continue;
+    const auto wall = std::find_if(walls.begin(), walls.end(), [&](const ContactWall& w) { return w.name() == r.boundary; });
+    if (wall == walls.end())
+      throw InputError("Responses/" + r.name + "/Boundary: '" + r.boundary + "' is not a Contact Wall (a Wall Gap "
+                       "measures one)");
+  }
 }
 
 Responses::Responses(const Teuchos::ParameterList& list, const Mesh& mesh) {
@@ -238,15 +249,19 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
         for (GO n : e) extent = std::max(extent, mesh.coords[n][r.component == "X" ? 0 : 1]);
       values[r.name] = extent;
     } else if (r.type == "Wall Gap") {
-      double gap = 0.0;
-      bool found = false;
+      // At the wall's downstream end (away from its Start Group): where the product leaves. Not the
+      // largest gap: the separated surface is flat there, and a maximum over tied nodes has no
+      // derivative.
       for (const ContactWall& wall : walls)
-        if (wall.name() == r.boundary) {
-          found = true;
-          for (int k = 0; k < wall.numNodes(); ++k) gap = std::max(gap, wall.gap(k));
+        if (wall.name() == r.boundary && !wall.releasedFreeSurface()) {
+          values[r.name] = 0.0;  // its nodes never leave the tool
+        } else if (wall.name() == r.boundary) {
+          const BoundaryGroup& upstream = mesh.boundary(wall.upstreamGroup());
+          bool firstIsUpstream = false;
+          for (const auto& e : upstream.edges)
+            firstIsUpstream = firstIsUpstream || e[0] == wall.curve().nodes.front() || e[1] == wall.curve().nodes.front();
+          values[r.name] = wall.gap(firstIsUpstream ? wall.numNodes() - 1 : 0);
         }
-      if (!found) throw InputError("Responses/" + r.name + "/Boundary: '" + r.boundary + "' is not a Contact Wall");
-      values[r.name] = gap;
     } else if (r.type == "Plastic Power" || r.type == "Stabilization Power" || r.type == "Dead Zone") {
       if (tangent && r.type == "Dead Zone") continue;  // piecewise constant in x: no derivative
       Scalar plastic, stabilization;

@@ -64,6 +64,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
     couplings.insert(couplings.end(), pairs.begin(), pairs.end());
   }
   m_responses = std::make_unique<Responses>(m_params.sublist("Responses"), m_mesh);
+  m_responses->checkWalls(m_walls);
   // Only a case with a Sensitivity sublist gets one: none means no work.
   m_sensitivity = std::make_unique<Sensitivity>(
       m_params.isSublist("Sensitivity") ? &m_params.sublist("Sensitivity") : nullptr, m_walls, *m_responses);
@@ -230,6 +231,11 @@ int Simulation::exitStatus() const {
 void Simulation::runSensitivity() {
   const auto start = std::chrono::steady_clock::now();
   m_sensitivity->compute(*m_model, *m_solution, *m_responses, m_mesh, *m_dofMap, m_walls);
+  if (!m_freeSurfaces->empty() && m_sensitivity->totalShapeRequested() && m_sensitivity->finite()) {
+    m_shapeDerivative = totalShapeDerivative(*this);
+    if (m_shapeDerivative.computed) m_sensitivity->setTotalShapeDerivatives(m_shapeDerivative.responses);
+    else log() << "sensitivity: no total derivative through the free surfaces: " << m_shapeDerivative.failure << "\n";
+  }
   m_sensitivitySeconds = secondsSince(start);
   if (!m_deferCheck) checkSensitivities();
 }
@@ -364,6 +370,8 @@ void Simulation::writeOutput(const std::string& outDir) const {
   m_sensitivity->report(summary);  // "sensitivities", "sensitivity" (what it cost)
   summary["sensitivity"]["finite_difference"] = {{"runs", 0}};
   if (m_fdCheck) m_fdCheck->report(summary);  // "fd_check"
+  if (!m_freeSurfaces->empty() && m_sensitivity->computed() && m_sensitivity->totalShapeRequested())
+    m_shapeDerivative.report(summary);  // "sensitivities_total_shape", "shape_derivative"
   if (!m_notMet.empty())
     summary["message"] = m_notMet;
   else if (!m_estimate->failure.empty())

@@ -166,7 +166,8 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
     // gapTolerance) is not touched by the material: it is released and the run goes on through it.
     const ContactWall* wall = s.wall >= 0 ? &walls[s.wall] : nullptr;
     std::vector<double> bNew = b;
-    std::vector<char> free(n, 1);  // per surface node
+    std::vector<char> free(n, 1);        // per surface node
+    std::vector<char> integrated(n, 0);  // placed by the streamline (not a start, not on the tool)
     if (wall)
       for (size_t k = 0; k < n; ++k) free[k] = !wall->isActive(s.wallIndex[k]);
     for (size_t k = 0; k + 1 < n; ++k) {
@@ -204,6 +205,7 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
       if (!free[k + 1]) {  // the end of a separated run: reattached, or passing below the node
         if (bNew[k + 1] < s.tool[k + 1] - gapTolerance && !wall->held(s.wallIndex[k + 1])) {
           free[k + 1] = 1;
+          integrated[k + 1] = 1;
           out.released.push_back({s.wall, s.wallIndex[k + 1]});
           out.maxFlowAngle = std::max(out.maxFlowAngle, angle);
         } else {
@@ -218,6 +220,7 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
         ++out.clampedToTool;
       } else {
         out.maxFlowAngle = std::max(out.maxFlowAngle, angle);
+        integrated[k + 1] = 1;
       }
     }
     // The update's residual is bNew − b; relax() moves the nodes by ω times it.
@@ -227,7 +230,7 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
       out.residual.push_back(residual);
       out.maxMove = std::max(out.maxMove, std::abs(residual));
       const double room = wall ? s.tool[k] - b[k] : std::numeric_limits<double>::infinity();
-      out.moves.push_back({s.nodes[k], s.normal, residual, room});
+      out.moves.push_back({s.nodes[k], s.normal, b[k], residual, room, integrated[k] != 0});
     }
     for (size_t k = 0; k < s.dragged.size(); ++k)
       out.drags.push_back({s.dragged[k], s.normal, s.dragFraction[k], first + n - 1});

@@ -5,10 +5,7 @@
 #include <map>
 #include <stdexcept>
 
-#include <Amesos2.hpp>
 #include <Teuchos_DefaultSerialComm.hpp>
-
-#include "flowform/core/TpetraTypes.hpp"
 
 namespace flowform {
 
@@ -38,9 +35,8 @@ void addTriangle(const Mesh& mesh, GO a, GO b, GO c, double weight, SparseRows& 
 
 }  // namespace
 
-std::vector<std::array<double, 2>> extendBoundaryDisplacement(const Mesh& mesh,
-                                                              const std::vector<std::array<double, 2>>& displacement,
-                                                              const std::vector<char>& prescribed) {
+HarmonicExtension::HarmonicExtension(const Mesh& mesh, const std::vector<char>& prescribed)
+    : m_mesh(mesh), m_prescribed(prescribed) {
   const GO numNodes = mesh.numNodes();
   const int npc = nodesPerCell(mesh.cellType);
   // Boundary nodes: the ends of edges that belong to one cell only.
@@ -53,17 +49,11 @@ std::vector<std::array<double, 2>> extendBoundaryDisplacement(const Mesh& mesh,
   std::vector<char> boundary(numNodes, 0);
   for (const auto& [edge, count] : edgeCount)
     if (count == 1) boundary[edge.first] = boundary[edge.second] = 1;
-
-  std::vector<std::array<double, 2>> coords = mesh.coords;
-  for (GO i = 0; i < numNodes; ++i)
-    if (prescribed[i]) coords[i] = {coords[i][0] + displacement[i][0], coords[i][1] + displacement[i][1]};
-
-  // Interior unknowns, numbered 0..m−1.
-  std::vector<GO> unknown(numNodes, -1);
+  m_unknown.assign(numNodes, -1);
   GO m = 0;
   for (GO i = 0; i < numNodes; ++i)
-    if (!boundary[i] && !prescribed[i]) unknown[i] = m++;
-  if (m == 0) return coords;
+    if (!boundary[i] && !prescribed[i]) m_unknown[i] = m++;
+  if (m == 0) return;
 
   SparseRows K(numNodes);
   for (GO c = 0; c < mesh.numCells(); ++c) {
@@ -77,51 +67,72 @@ std::vector<std::array<double, 2>> extendBoundaryDisplacement(const Mesh& mesh,
       addTriangle(mesh, v[1], v[3], v[0], 0.5, K);
     }
   }
-
-  // K_II d_I = −K_IB d_B (d_B = the prescribed displacement, 0 on the other boundary nodes).
+  // K_II (factored) and K_IB (kept for the right-hand sides −K_IB d_B).
   auto map = Teuchos::rcp(new Map(m, 0, Teuchos::rcp(new Teuchos::SerialComm<int>())));
   Teuchos::Array<size_t> rowLength(m, 0);
-  for (GO i = 0; i < numNodes; ++i)
-    if (unknown[i] >= 0)
-      for (const auto& entry : K[i]) rowLength[unknown[i]] += unknown[entry.first] >= 0;
-  auto A = Teuchos::rcp(new CrsMatrix(map, rowLength()));
-  auto rhs = Teuchos::rcp(new MultiVector(map, 2)), d = Teuchos::rcp(new MultiVector(map, 2));
-  {
-    auto b = rhs->getLocalViewHost(Tpetra::Access::OverwriteAll);
-    std::vector<GO> cols;
-    std::vector<double> vals;
-    for (GO i = 0; i < numNodes; ++i) {
-      if (unknown[i] < 0) continue;
-      cols.clear();
-      vals.clear();
-      double r[2] = {0.0, 0.0};
-      for (const auto& [j, kij] : K[i]) {
-        if (unknown[j] >= 0) {
-          cols.push_back(unknown[j]);
-          vals.push_back(kij);
-        } else if (prescribed[j]) {
-          r[0] -= kij * displacement[j][0];
-          r[1] -= kij * displacement[j][1];
-        }
-      }
-      A->insertGlobalValues(unknown[i], Teuchos::ArrayView<const GO>(cols), Teuchos::ArrayView<const double>(vals));
-      b(unknown[i], 0) = r[0];
-      b(unknown[i], 1) = r[1];
+  m_coupling.resize(m);
+  for (GO i = 0; i < numNodes; ++i) {
+    if (m_unknown[i] < 0) continue;
+    for (const auto& [j, kij] : K[i]) {
+      if (m_unknown[j] >= 0) ++rowLength[m_unknown[i]];
+      else if (prescribed[j]) m_coupling[m_unknown[i]].push_back({j, kij});
     }
   }
-  A->fillComplete();
-  auto solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", A, d, rhs);
+  m_matrix = Teuchos::rcp(new CrsMatrix(map, rowLength()));
+  std::vector<GO> cols;
+  std::vector<double> vals;
+  for (GO i = 0; i < numNodes; ++i) {
+    if (m_unknown[i] < 0) continue;
+    cols.clear();
+    vals.clear();
+    for (const auto& [j, kij] : K[i])
+      if (m_unknown[j] >= 0) {
+        cols.push_back(m_unknown[j]);
+        vals.push_back(kij);
+      }
+    m_matrix->insertGlobalValues(m_unknown[i], Teuchos::ArrayView<const GO>(cols), Teuchos::ArrayView<const double>(vals));
+  }
+  m_matrix->fillComplete();
+  m_rhs = Teuchos::rcp(new MultiVector(map, 2));
+  m_solution = Teuchos::rcp(new MultiVector(map, 2));
   try {
-    solver->symbolicFactorization();
-    solver->numericFactorization();
-    solver->solve();
+    m_solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", m_matrix, m_solution, m_rhs);
+    m_solver->symbolicFactorization();
+    m_solver->numericFactorization();
   } catch (const std::exception& e) {
     throw std::runtime_error(std::string("mesh motion: the Laplacian could not be factored: ") + e.what());
   }
-  const auto x = d->getLocalViewHost(Tpetra::Access::ReadOnly);
-  for (GO i = 0; i < numNodes; ++i)
-    if (unknown[i] >= 0) coords[i] = {coords[i][0] + x(unknown[i], 0), coords[i][1] + x(unknown[i], 1)};
+}
+
+std::vector<std::array<double, 2>> HarmonicExtension::positions(const std::vector<std::array<double, 2>>& displacement) {
+  std::vector<std::array<double, 2>> coords = m_mesh.coords;
+  for (GO i = 0; i < m_mesh.numNodes(); ++i)
+    if (m_prescribed[i]) coords[i] = {coords[i][0] + displacement[i][0], coords[i][1] + displacement[i][1]};
+  if (m_solver.is_null()) return coords;
+  {
+    // K_II d_I = −K_IB d_B (d_B = the prescribed displacement, 0 on the other boundary nodes).
+    auto b = m_rhs->getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (size_t r = 0; r < m_coupling.size(); ++r) {
+      double sum[2] = {0.0, 0.0};
+      for (const auto& [j, kij] : m_coupling[r]) {
+        sum[0] -= kij * displacement[j][0];
+        sum[1] -= kij * displacement[j][1];
+      }
+      b(r, 0) = sum[0];
+      b(r, 1) = sum[1];
+    }
+  }
+  m_solver->solve();
+  const auto x = m_solution->getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (GO i = 0; i < m_mesh.numNodes(); ++i)
+    if (m_unknown[i] >= 0) coords[i] = {coords[i][0] + x(m_unknown[i], 0), coords[i][1] + x(m_unknown[i], 1)};
   return coords;
+}
+
+std::vector<std::array<double, 2>> extendBoundaryDisplacement(const Mesh& mesh,
+                                                              const std::vector<std::array<double, 2>>& displacement,
+                                                              const std::vector<char>& prescribed) {
+  return HarmonicExtension(mesh, prescribed).positions(displacement);
 }
 
 }  // namespace flowform

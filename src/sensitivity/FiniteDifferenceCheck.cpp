@@ -102,6 +102,11 @@ FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, con
       e.backwardDiff = std::abs(e.ddm - e.backward);
       if (plus.movingFunctionals.count(response) && minus.movingFunctionals.count(response)) {
         e.hasMoving = true;
+        const auto total = sensitivity.totalShapeDerivatives().find(response);
+        if (total != sensitivity.totalShapeDerivatives().end() && total->second.count(h.name)) {
+          e.hasTotal = true;
+          e.ddmTotal = total->second.at(h.name);
+        }
         e.fdMoving = (plus.movingFunctionals.at(response) - minus.movingFunctionals.at(response)) / (2 * pr.delta);
         log() << "fd check:   d" << response << "/dh with re-converged free surfaces: " << e.fdMoving << "\n";
       }
@@ -160,6 +165,11 @@ void FiniteDifferenceCheck::report(nlohmann::json& summary) const {
       if (e.hasMoving) {
         entry["fd_moving_shape"] = e.fdMoving;
         entry["shape_gap"] = relativeDifference(std::abs(e.fdMoving - e.fd), e.fdMoving, e.fd);
+      }
+      if (e.hasTotal) {
+        entry["ddm_total_shape"] = e.ddmTotal;
+        entry["rel_diff_total_shape"] = relativeDifference(std::abs(e.ddmTotal - e.fdMoving), e.ddmTotal, e.fdMoving);
+        entry["abs_diff_total_shape"] = std::abs(e.ddmTotal - e.fdMoving);
       }
       check[response][pr.name] = entry;
     }

@@ -43,6 +43,12 @@ Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
       "contact penalty scales in the check's runs: Held (the base run's, as the DDM holds them: checks the DDM) or "
       "Recomputed (from the start state at h ± δ, as a fresh solve would: measures what holding them neglects)",
       Teuchos::tuple<std::string>("Held", "Recomputed"), valid.get());
+  Teuchos::setStringToIntegralParameter<int>(
+      "Shape Derivative", "Total",
+      "with free surfaces: Total (the derivatives through the moving surfaces as well, sensitivities_total_shape; "
+      "two assemblies per surface node, docs/theory.md §3.5) or Frozen (the DDM on the converged shape only); "
+      "no effect without free surfaces",
+      Teuchos::tuple<std::string>("Total", "Frozen"), valid.get());
   return valid;
 }
 
@@ -69,6 +75,7 @@ Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<C
   m_step = list->get<double>("Finite Difference Step");
   m_holdScales = list->get<std::string>("Finite Difference Scales") == "Held";
   m_lastNewtonJacobian = list->get<std::string>("Jacobian") == "Last Newton Iterate";
+  m_totalShapeRequested = list->get<std::string>("Shape Derivative") == "Total";
   if (m_check)
     for (const std::string& name : responses.names())
       for (const char* reserved : kFieldEntries)

@@ -16,8 +16,9 @@
 //   Dead Zone       — area (volume) of the cells where |u| < Fraction × Reference Speed
 //   Boundary Extent — the largest coordinate (Component X or Y) of the group's nodes: where a free
 //                     surface ends (the extrudate's half-thickness at the outlet: the swell)
-//   Wall Gap        — the largest distance of a contact wall's nodes from its tool (a released
-//                     tail that left it as a free surface)
+//   Wall Gap        — the distance from its tool of a contact wall's downstream end (away from its
+//                     Start Group) when its released runs are free surfaces: the gap of the
+//                     separated product; 0 for other walls (their nodes never leave the tool)
 // The last two are positions: on a frozen shape their derivative is zero; the finite-difference
 // check with re-converged free surfaces gives the derivative through the shape.
 // Derivatives (docs/theory.md §4, paper eq. 21): dφ/dh = ∂φ/∂h + ∂φ/∂q dq/dh is the same evaluation
@@ -48,6 +49,9 @@ class Responses {
 
   /// `list` is the "Responses" sublist; InputError for a bad type or a missing group.
   Responses(const Teuchos::ParameterList& list, const Mesh& mesh);
+
+  /// InputError for a Wall Gap on a group that is not a contact wall.
+  void checkWalls(const std::vector<ContactWall>& walls) const;
 
   /// Every response at x, the same on every rank.
   std::map<std::string, double> evaluate(const Vector& xOwned, const Mesh& mesh, const DofMap& dofMap,

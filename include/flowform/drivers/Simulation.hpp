@@ -19,6 +19,7 @@
 #include "flowform/discretization/DofMap.hpp"
 #include "flowform/drivers/ContactStatusLoop.hpp"
 #include "flowform/drivers/FreeSurfaceLoop.hpp"
+#include "flowform/drivers/ShapeDerivative.hpp"
 #include "flowform/freesurface/FreeSurface.hpp"
 #include "flowform/drivers/TwoLevelEstimate.hpp"
 #include "flowform/io/FieldSet.hpp"
@@ -160,6 +161,7 @@ class Simulation {
   std::unique_ptr<ContactStatusLoop> m_statusLoop;
   std::unique_ptr<FreeSurfaces> m_freeSurfaces;
   FreeSurfaceReport m_freeSurfaceReport;
+  ShapeDerivative m_shapeDerivative;  ///< derivatives through the moving surfaces, when made
   Teuchos::RCP<Vector> m_solution;
   SolveReport m_report;
   double m_setupSeconds = 0.0;

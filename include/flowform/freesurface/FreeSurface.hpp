@@ -44,11 +44,14 @@ struct FreeSurfaceStep {
   /// residual (relax(ω); the step comes with ω = 1).
   std::vector<std::array<double, 2>> displacement;
   std::vector<char> prescribed;     ///< per mesh node: its displacement is boundary data
-  /// A surface node's move along its spine: b_update − b, and how far it may go before the tool.
+  /// A surface node's move along its spine: its b, b_update − b, how far it may go before the
+  /// tool, and whether the update placed it on a streamline (not a start, not on the tool: the
+  /// unknowns of the surface's fixed point).
   struct Move {
     GO node;
     std::array<double, 2> normal;
-    double residual, room;
+    double b, residual, room;
+    bool integrated;
   };
   /// A node of a group dragged by a surface's end (moves[end]), by its arc-length fraction.
   struct Drag {

@@ -14,13 +14,38 @@
 #include <array>
 #include <vector>
 
+#include <Amesos2.hpp>
+
+#include "flowform/core/TpetraTypes.hpp"
 #include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
 
-/// The node positions after moving the `prescribed` nodes by `displacement` and the interior
-/// nodes by its harmonic extension (other boundary nodes stay). Does not check the cells'
-/// orientation (Mesh::setCoordinates does).
+/// The harmonic extension on one mesh with one set of moved boundary nodes, factored once: any
+/// number of boundary displacements on those nodes can then be spread (the shape derivative
+/// spreads one per surface node).
+class HarmonicExtension {
+ public:
+  /// `prescribed`: per mesh node, whether its displacement is boundary data (every other
+  /// boundary node stays). std::runtime_error when the Laplacian cannot be factored.
+  HarmonicExtension(const Mesh& mesh, const std::vector<char>& prescribed);
+
+  /// The node positions after moving the prescribed nodes by `displacement` (per mesh node; only
+  /// the prescribed entries are read) and the interior by its extension.
+  std::vector<std::array<double, 2>> positions(const std::vector<std::array<double, 2>>& displacement);
+
+ private:
+  const Mesh& m_mesh;
+  std::vector<char> m_prescribed;
+  std::vector<GO> m_unknown;  ///< per mesh node: its interior unknown, or −1
+  /// K_IB per interior unknown: (boundary node, entry) pairs.
+  std::vector<std::vector<std::pair<GO, double>>> m_coupling;
+  Teuchos::RCP<CrsMatrix> m_matrix;
+  Teuchos::RCP<MultiVector> m_rhs, m_solution;
+  Teuchos::RCP<Amesos2::Solver<CrsMatrix, MultiVector>> m_solver;
+};
+
+/// HarmonicExtension(mesh, prescribed).positions(displacement): one move.
 std::vector<std::array<double, 2>> extendBoundaryDisplacement(const Mesh& mesh,
                                                               const std::vector<std::array<double, 2>>& displacement,
                                                               const std::vector<char>& prescribed);

@@ -14,7 +14,8 @@
 // With free surfaces the DDM differentiates on the frozen (converged) shape; the runs at h ± δ
 // are then made twice: on the frozen shape (the check of the DDM) and with the surfaces
 // re-converged (fd_moving_shape: the total derivative), and the entry reports the gap between
-// the two (docs/theory.md §3).
+// the two (docs/theory.md §3.5) and, when the total derivative was computed, its difference from
+// fd_moving_shape (ddm_total_shape, rel_diff_total_shape).
 //
 // A run that does not converge makes its entries "not_converged" and the run's exit status
 // 3 (the primal results and the DDM sensitivities are still valid and written).
@@ -84,6 +85,8 @@ class FiniteDifferenceCheck {
     double diff = 0.0, forwardDiff = 0.0, backwardDiff = 0.0;
     bool hasMoving = false;
     double fdMoving = 0.0;  ///< central difference with re-converged free surfaces
+    bool hasTotal = false;
+    double ddmTotal = 0.0;  ///< the derivative through the moving shape (drivers/ShapeDerivative)
   };
   /// A wall node whose status or friction branch differs between the runs.
   struct ChangedNode {

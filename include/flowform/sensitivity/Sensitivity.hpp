@@ -54,6 +54,13 @@ class Sensitivity {
   double step() const { return m_step; }
   /// Whether the finite-difference runs hold the base run's contact penalty scales.
   bool holdScalesInCheck() const { return m_holdScales; }
+  /// With free surfaces: whether the derivatives through the moving shape are wanted.
+  bool totalShapeRequested() const { return m_totalShapeRequested; }
+  /// The derivatives through the moving free surfaces (drivers/ShapeDerivative), when made:
+  /// response → parameter → value (the finite-difference check compares them with its
+  /// re-converged runs).
+  void setTotalShapeDerivatives(std::map<std::string, std::map<std::string, double>> d) { m_totalShape = std::move(d); }
+  const std::map<std::string, std::map<std::string, double>>& totalShapeDerivatives() const { return m_totalShape; }
 
   /// dq/dh for every parameter at the converged x, then dφ/dh for every response.
   void compute(FlowModel& model, const Vector& x, const Responses& responses, const Mesh& mesh, const DofMap& dofMap,
@@ -80,6 +87,8 @@ class Sensitivity {
   double m_step = 2e-4;
   bool m_holdScales = true;
   bool m_lastNewtonJacobian = false;
+  bool m_totalShapeRequested = true;
+  std::map<std::string, std::map<std::string, double>> m_totalShape;
 
   Teuchos::RCP<MultiVector> m_dqdh;
   std::map<std::string, std::map<std::string, double>> m_responseDerivatives;
