@@ -1,7 +1,8 @@
 # The discrete power balance closes to solver tolerance (power_balance.py), with friction
-# (Coulomb ν = 0.1, plane strain), without, and axisymmetric.
+# (Coulomb ν = 0.1, plane strain), without, axisymmetric, and on the mesh a free surface moved
+# (the separating die land, docs/theory.md §3.4: the traction-free surface adds no power).
 set(FLOWFORM_PYTHON /usr/bin/python3)
-foreach(variant coulomb frictionless axisymmetric)
+foreach(variant coulomb frictionless axisymmetric separating_land)
   set(case ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml)
   set(extra --set "Adaptivity/Enabled=false")  # the scene's own mesh, solved once
   if(variant STREQUAL "frictionless")
@@ -10,6 +11,8 @@ foreach(variant coulomb frictionless axisymmetric)
               --set "Boundary Conditions/die_land/Friction Coefficient=0.0")
   elseif(variant STREQUAL "axisymmetric")
     set(case ${FLOWFORM_SOURCE_DIR}/xml/extrusion_axisym.xml)
+  elseif(variant STREQUAL "separating_land")
+    set(case ${FLOWFORM_SOURCE_DIR}/xml/extrusion_separation.xml)
   endif()
   add_test(NAME power_balance_${variant}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/power_balance.py
