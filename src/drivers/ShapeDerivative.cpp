@@ -47,9 +47,15 @@ ShapeDerivative totalShapeDerivative(Simulation& sim) {
     out.failure = step0.failure;
     return out;
   }
-  std::vector<size_t> unknown;  // indices into step0.moves
+  // An unknown: a move index and a direction (spines: the normal; arc length: x and y).
+  struct Unknown {
+    size_t move;
+    std::array<double, 2> direction;
+  };
+  std::vector<Unknown> unknown;
   for (size_t i = 0; i < step0.moves.size(); ++i)
-    if (step0.moves[i].integrated) unknown.push_back(i);
+    if (step0.moves[i].integrated)
+      for (const auto& d : step0.moves[i].directions()) unknown.push_back({i, d});
   const int nb = static_cast<int>(unknown.size());
   out.unknowns = nb;
   if (nb == 0) {
@@ -65,21 +71,23 @@ ShapeDerivative totalShapeDerivative(Simulation& sim) {
                                             noRelease);
     std::vector<double> u(nb, 0.0);
     for (int j = 0; j < nb; ++j) {
-      const FreeSurfaceStep::Move& m = s.moves[unknown[j]];
-      u[j] = m.b + m.residual;
+      const FreeSurfaceStep::Move& m = s.moves[unknown[j].move];
+      const auto& x = sim.mesh().coords[m.node];
+      const auto& d = unknown[j].direction;
+      u[j] = (x[0] + m.residual[0]) * d[0] + (x[1] + m.residual[1]) * d[1];  // where the update puts it
     }
     return u;
   };
   auto responses = [&](const Vector& x) {
     return sim.responses().evaluate(x, sim.mesh(), dofMap, sim.model().assembler(), sim.contactWalls());
   };
-  // The mesh with unknown j moved by `amount` along its spine (and the group its surface drags).
+  // The mesh with unknown j moved by `amount` along its direction (and the group its surface drags).
   auto moveUnknown = [&](int j, double amount) {
     std::vector<std::array<double, 2>> d = zero;
-    const FreeSurfaceStep::Move& m = step0.moves[unknown[j]];
-    d[m.node] = {amount * m.normal[0], amount * m.normal[1]};
+    const auto& dir = unknown[j].direction;
+    d[step0.moves[unknown[j].move].node] = {amount * dir[0], amount * dir[1]};
     for (const FreeSurfaceStep::Drag& drag : step0.drags)
-      if (drag.end == unknown[j]) d[drag.node] = {drag.fraction * amount * drag.normal[0], drag.fraction * amount * drag.normal[1]};
+      if (drag.end == unknown[j].move) d[drag.node] = {drag.fraction * amount * dir[0], drag.fraction * amount * dir[1]};
     sim.moveNodes(extension.positions(d));
   };
 

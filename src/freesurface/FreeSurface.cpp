@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/core/InputError.hpp"
 #include "flowform/mesh/BoundaryCurve.hpp"
@@ -38,6 +41,22 @@ std::vector<GO> orderedFrom(const Mesh& mesh, const BoundaryCurve& curve, const 
   return nodes;
 }
 
+/// The segment's flux-weighted mean velocity: the plain mean in plane strain; in axisymmetry
+/// (u_a(2r_a + r_b) + u_b(r_a + 2r_b)) / (3(r_a + r_b)), so that L ū·n is the flux ∫ u·n 2πr ds / 2π r̄.
+Point segmentVelocity(const Point& xa, const Point& xb, const Point& ua, const Point& ub, Geometry geometry) {
+  double wa = 0.5;
+  if (geometry == Geometry::Axisymmetric && xa[0] + xb[0] > 0.0) wa = (2.0 * xa[0] + xb[0]) / (3.0 * (xa[0] + xb[0]));
+  const double wb = 1.0 - wa;
+  return {wa * ua[0] + wb * ub[0], wa * ua[1] + wb * ub[1]};
+}
+
+/// |ū·n|/|ū| of segment a–b: the sine of the angle between the flow and the segment.
+double flowAngle(const Point& xa, const Point& xb, const Point& mean) {
+  const Point d = minus(xb, xa);
+  const double len = std::hypot(d[0], d[1]);
+  return std::abs(mean[0] * d[1] - mean[1] * d[0]) / (len * std::hypot(mean[0], mean[1]));
+}
+
 }  // namespace
 
 Teuchos::RCP<const Teuchos::ParameterList> validFreeSurfaceParameters() {
@@ -47,15 +66,26 @@ Teuchos::RCP<const Teuchos::ParameterList> validFreeSurfaceParameters() {
   valid->set("Type", "Free Surface", "a traction-free boundary that becomes a streamline (docs/theory.md §3)");
   valid->set("Start Group", "",
              "the boundary group that shares the surface's fixed start (the die wall at a die exit)");
+  Teuchos::setStringToIntegralParameter<int>(
+      "Update", "Spines",
+      "Spines: every node moves along the normal of the surface's chord (a surface that advances along its chord: "
+      "a jet, a die land); Arc Length: every segment keeps its length and turns with the flow (a surface that "
+      "turns, e.g. a chip's back); docs/theory.md §3.2",
+      Teuchos::tuple<std::string>("Spines", "Arc Length"), valid.get());
   return valid;
 }
 
 FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mesh,
                            const std::vector<ContactWall>& walls) {
-  auto make = [&](const std::string& name, std::vector<GO> nodes, const std::string& where) {
+  auto make = [&](const std::string& name, std::vector<GO> nodes, const std::string& where, bool arcLength) {
     Surface s;
     s.name = name;
     s.nodes = std::move(nodes);
+    s.arcLength = arcLength;
+    for (size_t k = 0; k + 1 < s.nodes.size(); ++k) {
+      const Point d = minus(mesh.coords[s.nodes[k + 1]], mesh.coords[s.nodes[k]]);
+      s.segmentLength.push_back(std::hypot(d[0], d[1]));
+    }
     // Spine frame: c along the chord start → end, m ⊥ c on the outward side of the curve.
     const Point x0 = mesh.coords[s.nodes.front()], x1 = mesh.coords[s.nodes.back()];
     const double length = std::hypot(x1[0] - x0[0], x1[1] - x0[1]);
@@ -72,7 +102,7 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
       s.along.push_back(dot(d, s.chord));
       s.tool.push_back(dot(d, s.normal));
     }
-    for (size_t k = 1; k < s.along.size(); ++k)
+    for (size_t k = 1; k < s.along.size() && !arcLength; ++k)
       if (!(s.along[k] > s.along[k - 1]))
         throw InputError(where + ": the surface turns back on its chord (node " + std::to_string(s.nodes[k]) +
                          "); the spine update needs a surface that advances along it");
@@ -87,10 +117,11 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
       if (!other.isStraight(1e-8))
         throw InputError(where + ": group '" + g.name + "' at the surface's downstream end must be straight");
       const auto& n = other.segmentNormals.front();
-      if (std::abs(dot(n, s.normal)) > 1e-8)
+      if (!arcLength && std::abs(dot(n, s.normal)) > 1e-8)
         throw InputError(where + ": group '" + g.name + "' at the surface's downstream end must run along the "
                          "surface's normal (its end node moves along it)");
-      // Fraction of the arc length from the group's other (fixed) end.
+      // Fraction of the arc length from the group's other end (fixed, or the end of another
+      // surface, whose drag adds the complementary fraction: the group stays straight).
       const double total = other.arcLength.back();
       const bool endFirst = other.nodes.front() == end;
       for (size_t k = 0; k < other.nodes.size(); ++k) {
@@ -116,14 +147,15 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
       throw InputError(where + ": " + e.what());
     }
     const BoundaryCurve curve = buildBoundaryCurve(mesh, mesh.boundary(name));
-    m_surfaces.push_back(make(name, orderedFrom(mesh, curve, list.get<std::string>("Start Group"), where), where));
+    m_surfaces.push_back(make(name, orderedFrom(mesh, curve, list.get<std::string>("Start Group"), where), where,
+                              list.get<std::string>("Update") == "Arc Length"));
   }
   for (size_t w = 0; w < walls.size(); ++w) {
     const ContactWall& wall = walls[w];
     if (!wall.releasedFreeSurface()) continue;
     const std::string where = "Boundary Conditions/" + wall.name() + " (Contact Wall, Released Nodes = Free Surface)";
     std::vector<GO> nodes = orderedFrom(mesh, wall.curve(), wall.upstreamGroup(), where);
-    Surface s = make(wall.name(), nodes, where);
+    Surface s = make(wall.name(), nodes, where, false);
     s.wall = static_cast<int>(w);
     const bool reversed = nodes.front() != wall.curve().nodes.front();
     for (int k = 0; k < wall.numNodes(); ++k) s.wallIndex.push_back(reversed ? wall.numNodes() - 1 - k : k);
@@ -133,17 +165,55 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
 }
 
 void FreeSurfaceStep::relax(double omega) {
-  for (const Move& m : moves) {
-    const double db = std::min(omega * m.residual, m.room);  // never into the tool
-    displacement[m.node] = {db * m.normal[0], db * m.normal[1]};
+  std::vector<std::array<double, 2>> moved(moves.size());
+  for (size_t i = 0; i < moves.size(); ++i) {
+    const Move& m = moves[i];
+    std::array<double, 2> d{omega * m.residual[0], omega * m.residual[1]};
+    const double along = dot(d, m.normal);
+    if (!m.arcLength && along > m.room) {  // never into the tool
+      d = {m.room * m.normal[0], m.room * m.normal[1]};
+    }
+    moved[i] = d;
+    displacement[m.node] = d;
     prescribed[m.node] = 1;
   }
+  for (const Drag& d : drags) displacement[d.node] = {0.0, 0.0};
   for (const Drag& d : drags) {
-    const Move& end = moves[d.end];
-    const double db = d.fraction * std::min(omega * end.residual, end.room);
-    displacement[d.node] = {db * d.normal[0], db * d.normal[1]};
+    displacement[d.node][0] += d.fraction * moved[d.end][0];
+    displacement[d.node][1] += d.fraction * moved[d.end][1];
     prescribed[d.node] = 1;
   }
+}
+
+bool FreeSurfaces::arcLengthStep(const Surface& s, const Mesh& mesh,
+                                 const std::function<std::array<double, 2>(GO)>& velocity, Geometry geometry,
+                                 FreeSurfaceStep& out) const {
+  // Arc length: x_{k+1} = x_k + L_k ū/|ū| from the fixed start, L_k the segment's length as made.
+  const size_t n = s.nodes.size();
+  std::vector<Point> x(n), xNew(n);
+  for (size_t k = 0; k < n; ++k) x[k] = mesh.coords[s.nodes[k]];
+  xNew[0] = x[0];
+  for (size_t k = 0; k + 1 < n; ++k) {
+    const Point mean = segmentVelocity(x[k], x[k + 1], velocity(s.nodes[k]), velocity(s.nodes[k + 1]), geometry);
+    const double speed = std::hypot(mean[0], mean[1]);
+    if (!(speed > 0.0)) {
+      out.failure = "the flow stands still on free surface '" + s.name + "' near (" + std::to_string(x[k][0]) + ", " +
+                    std::to_string(x[k][1]) + ")";
+      return false;
+    }
+    out.maxFlowAngle = std::max(out.maxFlowAngle, flowAngle(x[k], x[k + 1], mean));
+    xNew[k + 1] = {xNew[k][0] + s.segmentLength[k] * mean[0] / speed, xNew[k][1] + s.segmentLength[k] * mean[1] / speed};
+  }
+  const size_t first = out.moves.size();
+  for (size_t k = 0; k < n; ++k) {
+    const Point r = minus(xNew[k], x[k]);
+    out.residual.push_back(r[0]);
+    out.residual.push_back(r[1]);
+    out.maxMove = std::max(out.maxMove, std::hypot(r[0], r[1]));
+    out.moves.push_back({s.nodes[k], s.normal, r, std::numeric_limits<double>::infinity(), k > 0, true});
+  }
+  for (size_t k = 0; k < s.dragged.size(); ++k) out.drags.push_back({s.dragged[k], s.dragFraction[k], first + n - 1});
+  return true;
 }
 
 FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const std::vector<double>& u,
@@ -152,11 +222,15 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
   FreeSurfaceStep out;
   out.displacement.assign(mesh.numNodes(), {0.0, 0.0});
   out.prescribed.assign(mesh.numNodes(), 0);
-  auto velocity = [&](GO node) -> Point {
+  const std::function<Point(GO)> velocity = [&](GO node) -> Point {
     return {u[dofMap.globalDof(node, kUx)], u[dofMap.globalDof(node, kUy)]};
   };
   for (const Surface& s : m_surfaces) {
     const size_t n = s.nodes.size();
+    if (s.arcLength) {
+      if (!arcLengthStep(s, mesh, velocity, geometry, out)) return out;
+      continue;
+    }
     std::vector<double> b(n);
     for (size_t k = 0; k < n; ++k) b[k] = dot(minus(mesh.coords[s.nodes[k]], s.origin), s.normal);
     // A Free Surface group: every node but the first follows the streamline from it. A wall:
@@ -176,17 +250,7 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
         continue;
       }
       const GO na = s.nodes[k], nb = s.nodes[k + 1];
-      const Point ua = velocity(na), ub = velocity(nb);
-      // The segment's flux-weighted mean velocity (plain mean in plane strain).
-      double wa = 0.5, wb = 0.5;
-      if (geometry == Geometry::Axisymmetric) {
-        const double ra = mesh.coords[na][0], rb = mesh.coords[nb][0];
-        if (ra + rb > 0.0) {
-          wa = (2.0 * ra + rb) / (3.0 * (ra + rb));
-          wb = 1.0 - wa;
-        }
-      }
-      const Point mean{wa * ua[0] + wb * ub[0], wa * ua[1] + wb * ub[1]};
+      const Point mean = segmentVelocity(mesh.coords[na], mesh.coords[nb], velocity(na), velocity(nb), geometry);
       const double speed = std::hypot(mean[0], mean[1]);
       const double uc = dot(mean, s.chord), um = dot(mean, s.normal);
       if (!(uc > 1e-3 * speed) || !(speed > 0.0)) {
@@ -195,12 +259,7 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
                       "): the spine update needs u·c > 0";
         return out;
       }
-      // Angle between the flow and the segment at the current positions.
-      const Point xa = mesh.coords[na], xb = mesh.coords[nb];
-      const Point d = minus(xb, xa);
-      const double len = std::hypot(d[0], d[1]);
-      const Point segNormal{d[1] / len, -d[0] / len};  // either side: only |ū·n| is used
-      const double angle = std::abs(dot(mean, segNormal)) / speed;
+      const double angle = flowAngle(mesh.coords[na], mesh.coords[nb], mean);  // at the current positions
       bNew[k + 1] = bNew[k] + (s.along[k + 1] - s.along[k]) * um / uc;
       if (!free[k + 1]) {  // the end of a separated run: reattached, or passing below the node
         if (bNew[k + 1] < s.tool[k + 1] - gapTolerance && !wall->held(s.wallIndex[k + 1])) {
@@ -223,17 +282,16 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
         integrated[k + 1] = 1;
       }
     }
-    // The update's residual is bNew − b; relax() moves the nodes by ω times it.
+    // The update's residual is bNew − b along m; relax() moves the nodes by ω times it.
     const size_t first = out.moves.size();
     for (size_t k = 0; k < n; ++k) {
-      const double residual = bNew[k] - b[k];
-      out.residual.push_back(residual);
-      out.maxMove = std::max(out.maxMove, std::abs(residual));
+      const double r = bNew[k] - b[k];
+      out.residual.push_back(r);
+      out.maxMove = std::max(out.maxMove, std::abs(r));
       const double room = wall ? s.tool[k] - b[k] : std::numeric_limits<double>::infinity();
-      out.moves.push_back({s.nodes[k], s.normal, b[k], residual, room, integrated[k] != 0});
+      out.moves.push_back({s.nodes[k], s.normal, {r * s.normal[0], r * s.normal[1]}, room, integrated[k] != 0, false});
     }
-    for (size_t k = 0; k < s.dragged.size(); ++k)
-      out.drags.push_back({s.dragged[k], s.normal, s.dragFraction[k], first + n - 1});
+    for (size_t k = 0; k < s.dragged.size(); ++k) out.drags.push_back({s.dragged[k], s.dragFraction[k], first + n - 1});
   }
   out.relax(1.0);
   return out;

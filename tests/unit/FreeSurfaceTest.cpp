@@ -7,6 +7,9 @@
 //   slope s from its fixed start in one step (every segment parallel to u), reports the flow
 //   angle of the flat surface (s / √(1 + s²)), drags the group at the surface's end in proportion
 //   to its arc length, and at the next step finds the flow angle and the move zero;
+// - the arc-length update at a uniform velocity makes the surface the straight line along u with
+//   its segment lengths kept in one step, and the group at its end follows the end's move in
+//   proportion to its arc length;
 // - a Start Group that shares no end of the surface is an input error naming it.
 // Round-off bounds: 1e-12 (direct solve of a 100-node system, coordinates of order 1).
 #include <Teuchos_DefaultComm.hpp>
@@ -108,6 +111,36 @@ TEUCHOS_UNIT_TEST(FreeSurface, SpineUpdateFollowsUniformFlow) {
   TEST_FLOATING_EQUALITY(step.maxMove, 2.0 * slope, 1e-12);
 
   // Moved there, the next update finds the surface a streamline: nothing to move.
+  Mesh moved = c.mesh;
+  moved.setCoordinates(extendBoundaryDisplacement(c.mesh, step.displacement, step.prescribed));
+  const FreeSurfaceStep next = surfaces.step(moved, *c.dofMap, c.u, {}, Geometry::PlaneStrain, 1e-9);
+  TEST_COMPARE(next.maxFlowAngle, <, 1e-12);
+  TEST_COMPARE(next.maxMove, <, 1e-12);
+}
+
+TEUCHOS_UNIT_TEST(FreeSurface, ArcLengthUpdateTurnsWithUniformFlow) {
+  // Arc length: the flat top (from x = 0) becomes the straight line along u = (1, s) with every
+  // segment's length kept; the right side, dragged from its fixed bottom end, follows the end.
+  const double slope = 0.5;
+  SpineCase c(slope);
+  c.bc.sublist("top").set("Update", "Arc Length");
+  const FreeSurfaces surfaces(c.bc, c.mesh, {});
+  const FreeSurfaceStep step = surfaces.step(c.mesh, *c.dofMap, c.u, {}, Geometry::PlaneStrain, 1e-9);
+  TEST_ASSERT(step.failure.empty());
+  const double norm = std::sqrt(1.0 + slope * slope);
+  for (const auto& e : c.mesh.boundary("top").edges)
+    for (GO n : e) {
+      const double s0 = c.mesh.coords[n][0];  // arc length from the start (0, 1) as made
+      TEST_FLOATING_EQUALITY(c.mesh.coords[n][0] + step.displacement[n][0] + 1.0, s0 / norm + 1.0, 1e-12);
+      TEST_FLOATING_EQUALITY(c.mesh.coords[n][1] + step.displacement[n][1], 1.0 + slope * s0 / norm, 1e-12);
+    }
+  const GO end = 4 * 9 + 8;  // (2, 1)
+  for (const auto& e : c.mesh.boundary("right").edges)
+    for (GO n : e) {
+      const double f = c.mesh.coords[n][1];
+      TEST_FLOATING_EQUALITY(step.displacement[n][0] + 1.0, f * step.displacement[end][0] + 1.0, 1e-12);
+      TEST_FLOATING_EQUALITY(step.displacement[n][1] + 1.0, f * step.displacement[end][1] + 1.0, 1e-12);
+    }
   Mesh moved = c.mesh;
   moved.setCoordinates(extendBoundaryDisplacement(c.mesh, step.displacement, step.prescribed));
   const FreeSurfaceStep next = surfaces.step(moved, *c.dofMap, c.u, {}, Geometry::PlaneStrain, 1e-9);

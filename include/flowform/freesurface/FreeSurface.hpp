@@ -25,6 +25,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,19 +45,27 @@ struct FreeSurfaceStep {
   /// residual (relax(ω); the step comes with ω = 1).
   std::vector<std::array<double, 2>> displacement;
   std::vector<char> prescribed;     ///< per mesh node: its displacement is boundary data
-  /// A surface node's move along its spine: its b, b_update − b, how far it may go before the
-  /// tool, and whether the update placed it on a streamline (not a start, not on the tool: the
-  /// unknowns of the surface's fixed point).
+  /// A surface node's move: where the update puts it minus where it is (a vector: along the
+  /// spine normal for spines, any direction for arc length), how far along `normal` it may go
+  /// before its tool (spines on a wall; +∞ otherwise), whether the update placed it on a
+  /// streamline (not a start, not on the tool: the unknowns of the surface's fixed point), and the
+  /// directions it can move in (spines: the normal; arc length: x and y).
   struct Move {
     GO node;
     std::array<double, 2> normal;
-    double b, residual, room;
+    std::array<double, 2> residual;
+    double room;
     bool integrated;
+    bool arcLength;
+    std::vector<std::array<double, 2>> directions() const {
+      if (arcLength) return {{1.0, 0.0}, {0.0, 1.0}};
+      return {normal};
+    }
   };
-  /// A node of a group dragged by a surface's end (moves[end]), by its arc-length fraction.
+  /// A node of a group dragged by a surface's end (moves[end]), by its arc-length fraction from the
+  /// group's other end; where both ends move, the two drags add up.
   struct Drag {
     GO node;
-    std::array<double, 2> normal;
     double fraction;
     size_t end;
   };
@@ -66,7 +75,7 @@ struct FreeSurfaceStep {
   void relax(double omega);
   double maxFlowAngle = 0.0;        ///< max over surface segments of |ū·n|/|ū| at the current positions
   double maxMove = 0.0;             ///< largest |residual|: the move of the plain (unrelaxed) update
-  std::vector<double> residual;     ///< per surface node (all surfaces in order): b_update − b
+  std::vector<double> residual;     ///< the moves' residuals along their directions, in order (Aitken's vector)
   int clampedToTool = 0;            ///< free wall nodes the update put back on their tool
   /// Active wall nodes that a separated surface does not reach (its streamline passes below the
   /// tool there by more than the gap tolerance): they are released, as {wall, wall node}.
@@ -102,12 +111,17 @@ class FreeSurfaces {
     std::array<double, 2> origin{}, chord{}, normal{};  ///< x_0, c, m (outward)
     std::vector<double> along;   ///< a_k, fixed
     std::vector<double> tool;    ///< wall tails: b_k of the tool (as made); the tail stays at b ≤ tool
+    bool arcLength = false;      ///< Update = Arc Length (else spines)
+    std::vector<double> segmentLength;  ///< as made: kept by the arc-length update
     std::vector<GO> dragged;     ///< the nodes of the straight group at the downstream end
     std::vector<double> dragFraction;  ///< their arc-length fraction from the group's other end
   };
   const std::vector<Surface>& surfaces() const { return m_surfaces; }
 
  private:
+  /// The arc-length update of one surface into `out`; false (out.failure set) where the flow stands.
+  bool arcLengthStep(const Surface& s, const Mesh& mesh, const std::function<std::array<double, 2>(GO)>& velocity,
+                     Geometry geometry, FreeSurfaceStep& out) const;
   std::vector<Surface> m_surfaces;
   double m_lengthScale = 1.0;
 };
