@@ -55,14 +55,14 @@ endforeach()
 # and must move every rank's copy the same way; the flow re-solves are distributed. The die
 # swell (a Free Surface group) and the separating die land (a contact wall's released run), the
 # latter with the total derivative through its shape (surface moves, distributed assemblies).
-add_test(NAME parallel_equals_serial_die_swell
-         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
-                 $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/die_swell.xml
-                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_die_swell)
-set_tests_properties(parallel_equals_serial_die_swell PROPERTIES LABELS "regression" PROCESSORS 2)
-add_test(NAME parallel_equals_serial_separation
-         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
-                 $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/extrusion_separation.xml
-                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_separation --set "Adaptivity/Enabled=false"
-                 --set "Sensitivity/Parameters={Friction Coefficient}")
-set_tests_properties(parallel_equals_serial_separation PROPERTIES LABELS "regression" PROCESSORS 2)
+# flowform_parallel_equals_serial(NAME CASE [--set P=V ...]): xml/CASE on 2 ranks against 1.
+function(flowform_parallel_equals_serial name case)
+  add_test(NAME parallel_equals_serial_${name}
+           COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
+                   $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/${case}
+                   ${CMAKE_CURRENT_BINARY_DIR}/parallel_${name} ${ARGN})
+  set_tests_properties(parallel_equals_serial_${name} PROPERTIES LABELS "regression" PROCESSORS 2)
+endfunction()
+flowform_parallel_equals_serial(die_swell die_swell.xml)
+flowform_parallel_equals_serial(separation extrusion_separation.xml --set "Adaptivity/Enabled=false"
+                                --set "Sensitivity/Parameters={Friction Coefficient}")
