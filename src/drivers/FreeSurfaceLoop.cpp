@@ -85,8 +85,8 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
         relaxation = 1.0;
       }
       previousResidual = step.residual;
-      step.relax(relaxation);
     }
+    step.relax(relaxation);
     report.flowAngle = step.maxFlowAngle;
     report.move = step.maxMove;
     log() << "flowform: free surface " << report.iterations << ": max |u.n|/|u| = " << step.maxFlowAngle
@@ -108,8 +108,20 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     }
     for (const auto& [w, k] : step.released) hooks.release(w, k);
     t = Clock::now();
+    // The move; where it would invert a cell (a start far from the streamline), half of it, up to
+    // kMaxHalvings times (logged), then the loop gives up.
     try {
-      hooks.moveNodes(extendBoundaryDisplacement(mesh, step.displacement, step.prescribed));
+      HarmonicExtension extension(mesh, step.prescribed);
+      for (int halving = 0;; ++halving) {
+        try {
+          hooks.moveNodes(extension.positions(step.displacement));
+          break;
+        } catch (const InputError& e) {
+          if (halving == kMaxHalvings) throw;
+          log() << "flowform: free surface " << report.iterations << ": the move inverts a cell; halved\n";
+          for (auto& d : step.displacement) d = {0.5 * d[0], 0.5 * d[1]};
+        }
+      }
     } catch (const InputError& e) {
       report.message = std::string("the free-surface update would invert the mesh: ") + e.what();
       break;

@@ -10,7 +10,8 @@
 // - the arc-length update at a uniform velocity makes the surface the straight line along u with
 //   its segment lengths kept in one step, and the group at its end follows the end's move in
 //   proportion to its arc length;
-// - a Start Group that shares no end of the surface is an input error naming it.
+// - a Start Group that shares no end of the surface is an input error naming it;
+// - the loop halves a move that would invert a cell and goes on.
 // Round-off bounds: 1e-12 (direct solve of a 100-node system, coordinates of order 1).
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
@@ -19,6 +20,7 @@
 #include "StructuredMesh.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/discretization/DofMap.hpp"
+#include "flowform/drivers/FreeSurfaceLoop.hpp"
 #include "flowform/freesurface/FreeSurface.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
 
@@ -156,3 +158,40 @@ TEUCHOS_UNIT_TEST(FreeSurface, StartGroupMustShareAnEnd) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace flowform;
+
+/// The loop on the structured case with a uniform velocity whose streamline from the top-left
+/// corner leaves through the bottom: the plain update would invert cells.
+FreeSurfaceReport loopAt(double slope, int maxIterations) {
+  SpineCase c(slope);
+  const FreeSurfaces surfaces(c.bc, c.mesh, {});
+  Teuchos::ParameterList settings = *FreeSurfaceLoop::validParameters();
+  settings.set("Maximum Iterations", maxIterations);
+  settings.set("Relaxation", "None");
+  FreeSurfaceLoop::Hooks hooks;
+  hooks.velocities = [&] { return c.u; };
+  hooks.moveNodes = [&](const std::vector<std::array<double, 2>>& x) { c.mesh.setCoordinates(x); };
+  hooks.resolve = [](int&, int&, std::string&) { return true; };
+  hooks.release = [](int, int) {};
+  return FreeSurfaceLoop(surfaces, settings).run(c.mesh, *c.dofMap, {}, Geometry::PlaneStrain, hooks);
+}
+
+}  // namespace
+
+// A move that would invert a cell is halved until it does not (the top at slope −0.75 would cross
+// the bottom at x = 2: a quarter of it fits), and the loop goes on; one that cannot be made valid
+// in kMaxHalvings halvings ends the loop with the reason. Either way the mesh stays valid.
+TEUCHOS_UNIT_TEST(FreeSurface, LoopHalvesMovesThatInvert) {
+  const FreeSurfaceReport halved = loopAt(-0.75, 1);
+  TEST_ASSERT(!halved.converged);
+  TEST_EQUALITY(halved.iterations, 1);
+  TEST_ASSERT(halved.message.find("did not converge") != std::string::npos);
+  // Slope −100: even 2⁻⁶ of the move (the top's end 3.1 lower) crosses the bottom.
+  const FreeSurfaceReport impossible = loopAt(-100.0, 5);
+  TEST_ASSERT(!impossible.converged);
+  TEST_EQUALITY(impossible.iterations, 0);
+  TEST_ASSERT(impossible.message.find("invert") != std::string::npos);
+}

@@ -66,6 +66,7 @@ class FreeSurfaceLoop {
 
  private:
   static constexpr double kMinRelaxation = 0.1, kMaxRelaxation = 3.0;  ///< Aitken's ω kept in here
+  static constexpr int kMaxHalvings = 6;  ///< of a move that would invert a cell
   const FreeSurfaces& m_surfaces;
   int m_maxIterations;
   double m_angleTolerance, m_moveTolerance;
