@@ -44,9 +44,9 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
                                              Teuchos::tuple<std::string>("Active", "Free"), valid.get());
   Teuchos::setStringToIntegralParameter<int>(
       "Released Nodes", "Fixed",
-      "Fixed: released nodes stay on the tool, traction-free (the paper's contact element); Free Surface: the "
-      "released tail downstream of the last active node is a free surface that leaves the tool and becomes a "
-      "streamline (docs/theory.md §3; needs Start Group); Never: a bilateral wall, no node is released",
+      "Fixed: released nodes stay on the tool, traction-free (the paper's contact element); Free Surface: every run "
+      "of released nodes is a free surface from the node before it (the separation point) that leaves the tool and "
+      "becomes a streamline (docs/theory.md §3; needs Start Group); Never: a bilateral wall, no node is released",
       Teuchos::tuple<std::string>("Fixed", "Free Surface", "Never"), valid.get());
   Teuchos::setStringToIntegralParameter<int>(
       "Convex Corners", "Open",
@@ -57,8 +57,8 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
       "limited to the other wall's tangent, or zero if that wall holds it too",
       Teuchos::tuple<std::string>("Open", "Closed"), valid.get());
   valid->set("Start Group", "",
-             "Released Nodes = Free Surface: the boundary group at the wall's upstream end (the tail runs away "
-             "from it)");
+             "a Contact Wall with Released Nodes = Free Surface: the boundary group at the wall's upstream end; a Free "
+             "Surface group: the boundary group that shares its fixed start (docs/theory.md §3.1)");
   return valid;
 }
 

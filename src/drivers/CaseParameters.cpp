@@ -14,6 +14,7 @@
 #include "flowform/assembly/Responses.hpp"
 #include "flowform/sensitivity/Sensitivity.hpp"
 #include "flowform/contact/ContactWall.hpp"
+#include "flowform/freesurface/FreeSurface.hpp"
 
 namespace flowform {
 
@@ -106,6 +107,10 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   for (auto it = ContactWall::validParameters()->begin(); it != ContactWall::validParameters()->end(); ++it)
     if (ContactWall::validParameters()->name(it) != "Type")
       bcTemplate.setEntry(ContactWall::validParameters()->name(it), ContactWall::validParameters()->entry(it));
+  // A Free Surface group's own entries (its Start Group has the contact wall's name and type).
+  for (auto it = validFreeSurfaceParameters()->begin(); it != validFreeSurfaceParameters()->end(); ++it)
+    if (!bcTemplate.isParameter(validFreeSurfaceParameters()->name(it)))
+      bcTemplate.setEntry(validFreeSurfaceParameters()->name(it), validFreeSurfaceParameters()->entry(it));
   valid->set("Solver", *NonlinearSolver::validParameters(), "Newton and continuation");
 
   ParameterList& output = valid->sublist("Output", false, "what is written");
