@@ -110,14 +110,15 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     t = Clock::now();
     // The move; where it would invert a cell (a start far from the streamline), half of it, up to
     // kMaxHalvings times (logged), then the loop gives up.
+    int halvings = 0;
     try {
       HarmonicExtension extension(mesh, step.prescribed);
-      for (int halving = 0;; ++halving) {
+      for (;; ++halvings) {
         try {
           hooks.moveNodes(extension.positions(step.displacement));
           break;
         } catch (const InputError& e) {
-          if (halving == kMaxHalvings) throw;
+          if (halvings == kMaxHalvings) throw;
           log() << "flowform: free surface " << report.iterations << ": the move inverts a cell; halved\n";
           for (auto& d : step.displacement) d = {0.5 * d[0], 0.5 * d[1]};
         }
@@ -140,7 +141,7 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     report.contactChanges += changes;
     report.history.push_back({{"flow_angle", step.maxFlowAngle}, {"move", step.maxMove}, {"relaxation", relaxation},
                               {"clamped_to_tool", step.clampedToTool}, {"released", step.released.size()},
-                              {"newton_iterations", newton},
+                              {"halvings", halvings}, {"newton_iterations", newton},
                               {"contact_changes", changes}});
     if (!ok) {
       report.message = "the flow re-solve after free-surface update " + std::to_string(report.iterations) +

@@ -4,10 +4,11 @@
 // from the previous solution with its contact-status loop, and repeat until
 //     max |ū·n|/|ū| on the surfaces ≤ Flow Angle Tolerance  and
 //     the largest surface node move ≤ Move Tolerance × the surface's chord length.
-// The contact statuses and the shape are coupled through it (a tail node put back on its tool
-// may be activated by the status loop, an active node in tension released, so the tail starts
-// elsewhere); the loop counts its iterations and gives up, with the reason, at Maximum Iterations
-// — it cannot cycle silently.
+// The contact statuses and the shape are coupled through it (a released node put back on its
+// tool may be activated by the status loop, an active node in tension or not reached by the
+// surface released, so a run starts elsewhere); the loop counts its iterations and gives up, with
+// the reason, at Maximum Iterations — it cannot cycle silently. A move that would invert a cell
+// is halved (up to kMaxHalvings times) first.
 #pragma once
 
 #include <array>

@@ -85,8 +85,8 @@ struct FreeSurfaceStep {
 
 class FreeSurfaces {
  public:
-  /// The case's free surfaces: every "Free Surface" group of `bcList` and the tail of every wall
-  /// whose Released Nodes are Free Surface. InputError for a start group that does not share an
+  /// The case's free surfaces: every "Free Surface" group of `bcList` and every wall whose
+  /// Released Nodes are Free Surface (its released runs). InputError for a start group that does not share an
   /// end with its surface, or a surface not made of one open curve.
   FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mesh, const std::vector<ContactWall>& walls);
 
@@ -95,22 +95,23 @@ class FreeSurfaces {
   double lengthScale() const { return m_lengthScale; }
 
   /// The update at the velocities `u` (replicated, global dof ids: SolutionTransfer replicate()).
-  /// Wall tails start at the wall's last active node; tail nodes upstream of it that are off
-  /// their tool are put back on it.
+  /// On a wall, active nodes stay on the tool and each run of free nodes follows the streamline
+  /// from the node before it (the separation point); a node whose streamline enters the tool is
+  /// put back on it.
   /// `gapTolerance`: how far below the tool a separated streamline may pass an active node
   /// before the node is released (a length).
   FreeSurfaceStep step(const Mesh& mesh, const DofMap& dofMap, const std::vector<double>& u,
                        const std::vector<ContactWall>& walls, Geometry geometry, double gapTolerance) const;
 
-  /// Per surface: its name, nodes from its start (wall tails: all wall nodes in flow order).
+  /// Per surface: its name, nodes from its start (a wall: all its nodes in flow order).
   struct Surface {
     std::string name;
     std::vector<GO> nodes;       ///< from the fixed start to the downstream end
-    int wall = -1;               ///< index of the contact wall whose tail this is, or −1
-    std::vector<int> wallIndex;  ///< wall tails: the wall node of nodes[k]
+    int wall = -1;               ///< index of the contact wall whose released runs these are, or −1
+    std::vector<int> wallIndex;  ///< a wall: the wall node of nodes[k]
     std::array<double, 2> origin{}, chord{}, normal{};  ///< x_0, c, m (outward)
     std::vector<double> along;   ///< a_k, fixed
-    std::vector<double> tool;    ///< wall tails: b_k of the tool (as made); the tail stays at b ≤ tool
+    std::vector<double> tool;    ///< a wall: b_k of the tool (as made); its nodes stay at b ≤ tool
     bool arcLength = false;      ///< Update = Arc Length (else spines)
     std::vector<double> segmentLength;  ///< as made: kept by the arc-length update
     std::vector<GO> dragged;     ///< the nodes of the straight group at the downstream end
