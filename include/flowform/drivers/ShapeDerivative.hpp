@@ -1,20 +1,12 @@
 // Total derivatives through the shape of free surfaces (docs/theory.md §3.5).
 //
-// At convergence the flow q and the surface unknowns b (the spine coordinates of the nodes the
-// update places on streamlines) satisfy
-//     R(q, X(b); h) = 0            the discrete flow on the mesh X(b) (interior by the harmonic
-//                                  extension E of the surface move),
-//     b = U(q, X(b))               the spine update (FreeSurfaces::step).
-// Differentiating along h, with dq = dq_frozen + Y db, Y = −K_t⁻¹ (∂R/∂X E) (one column per
-// surface unknown, back-substitutions with the converged factors):
-//     (I − G) db = U_q dq_frozen,    G = ∂U/∂b + U_q Y,
+// At convergence the flow q and the surface unknowns b satisfy R(q, X(b); h) = 0 and
+// b = U(q, X(b)) (UpdateLinearization). Differentiating along h, with dq = dq_frozen + Y db:
+//     (I − G) db = U_q dq_frozen,
 //     dφ/dh = dφ/dh|frozen + Σ_j (∂φ/∂b_j + φ_q Y_j) db_j.
-// ∂R/∂X E, ∂U/∂b and ∂φ/∂b are central differences in the node positions (each surface
-// unknown moved by ±ε = 10⁻⁶ × the surface length, the interior following by E); U_q and φ_q
-// along Y_j and dq_frozen are central differences in q. The flow part is the DDM's (the
-// converged factors, one back-substitution per surface unknown); the contact statuses and the
-// penalty scales are held, as in the DDM. Cost: two residual assemblies, mesh moves and update
-// evaluations per surface unknown, one dense solve of their number.
+// The flow part is the DDM's (the converged factors, one back-substitution per surface unknown);
+// contact statuses and penalty scales are held, as in the DDM. Cost: two residual assemblies,
+// mesh moves and update evaluations per surface unknown, one dense solve of their number.
 #pragma once
 
 #include <map>

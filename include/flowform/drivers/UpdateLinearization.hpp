@@ -1,0 +1,70 @@
+// The free-surface update linearized at a converged state (docs/theory.md §3.5): the surface
+// unknowns b (the spine coordinates of the nodes the update places on streamlines: one per node
+// for spines, x and y for arc length), the flow's response to them Y = dq/db = −K_t⁻¹ ∂R/∂X E,
+// and the Jacobian of the map b ↦ U(q(b), X(b)),
+//     G = ∂U/∂b + U_q Y.
+// ∂R/∂X E, ∂U/∂b (and ∂φ/∂b for the responses) are central differences in the node positions:
+// each unknown moved by ±10⁻⁶ × the surface length, the interior following by the harmonic
+// extension E (factored once); U_q and φ_q along a direction are central differences in q. The
+// flow part uses the factors of K_t at the state (one back-substitution per unknown); contact
+// statuses and penalty scales are held. Used by the total shape derivative (ShapeDerivative)
+// and by the Newton step on the positions of the free-surface loop.
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Teuchos_SerialDenseMatrix.hpp>
+
+#include "flowform/core/TpetraTypes.hpp"
+#include "flowform/freesurface/FreeSurface.hpp"
+
+namespace flowform {
+
+class Simulation;
+
+class UpdateLinearization {
+ public:
+  /// Linearizes at `sim`'s current solution and mesh (the mesh is moved and restored; the
+  /// factors of K_t at the state are left in the model). With `responses`, also ∂φ/∂b + φ_q Y
+  /// for every response. failure() says why when it cannot be made.
+  UpdateLinearization(Simulation& sim, bool responses);
+
+  const std::string& failure() const { return m_failure; }
+  int size() const { return static_cast<int>(m_unknowns.size()); }
+  /// The plain update at the state.
+  const FreeSurfaceStep& step() const { return m_step; }
+  /// The spectral radius of G (power iteration): the plain update's contraction per step.
+  double spectralRadius() const { return m_spectralRadius; }
+  /// U_q d (per unknown) by central differences along d (a dof vector on the owned map).
+  std::vector<double> updateAlong(const Vector& d) const;
+  /// dφ/db_j = ∂φ/∂b_j + φ_q Y_j of response `name` (with `responses` only).
+  double responseShape(int j, const std::string& name) const { return m_phiB[j].at(name) + m_phiQ[j].at(name); }
+  /// X = (I − G)⁻¹ B (columns); false when I − G is singular.
+  bool solve(const Teuchos::SerialDenseMatrix<int, double>& B, Teuchos::SerialDenseMatrix<int, double>& X) const;
+  /// One Newton step on the positions: per move of step(), the displacement δ = (I − G)⁻¹ r on the
+  /// unknowns (r the plain update's residual), the plain residual on the other moves.
+  bool newtonMoves(std::vector<std::array<double, 2>>& moves) const;
+
+ private:
+  struct Unknown {
+    size_t move;                     ///< index into step().moves
+    std::array<double, 2> direction;  ///< unit direction the unknown moves the node in
+  };
+  /// U along the unknowns at x on the current mesh.
+  std::vector<double> updateAt(const Vector& x) const;
+  std::map<std::string, double> responsesAt(const Vector& x) const;
+
+  Simulation& m_sim;
+  std::string m_failure;
+  FreeSurfaceStep m_step;
+  std::vector<Unknown> m_unknowns;
+  Teuchos::RCP<Vector> m_state;
+  Teuchos::SerialDenseMatrix<int, double> m_G;
+  std::vector<std::map<std::string, double>> m_phiB, m_phiQ;
+  double m_spectralRadius = 0.0;
+};
+
+}  // namespace flowform

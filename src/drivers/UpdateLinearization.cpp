@@ -1,0 +1,178 @@
+#include "flowform/drivers/UpdateLinearization.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Teuchos_SerialDenseSolver.hpp>
+
+#include "flowform/discretization/SolutionTransfer.hpp"
+#include "flowform/drivers/Simulation.hpp"
+#include "flowform/freesurface/MeshMotion.hpp"
+
+namespace flowform {
+
+namespace {
+constexpr double kNoRelease = std::numeric_limits<double>::infinity();  // statuses held
+}
+
+UpdateLinearization::UpdateLinearization(Simulation& sim, bool responses) : m_sim(sim) {
+  const DofMap& dofMap = sim.dofMap();
+  const Geometry geometry = sim.physics().kernel.geometry;
+  m_state = Teuchos::rcp(new Vector(sim.solution(), Teuchos::Copy));
+  const Vector& q = *m_state;
+  const Mesh base = sim.mesh();
+
+  m_step = sim.freeSurfaces().step(base, dofMap, replicate(q, dofMap), sim.contactWalls(), geometry, kNoRelease);
+  if (!m_step.failure.empty()) {
+    m_failure = m_step.failure;
+    return;
+  }
+  for (size_t i = 0; i < m_step.moves.size(); ++i)
+    if (m_step.moves[i].integrated)
+      for (const auto& d : m_step.moves[i].directions()) m_unknowns.push_back({i, d});
+  const int nb = size();
+  if (nb == 0) {
+    m_failure = "no surface node is placed by the update";
+    return;
+  }
+  std::vector<std::array<double, 2>> zero(base.numNodes(), {0.0, 0.0});
+  HarmonicExtension extension(base, m_step.prescribed);
+  // The mesh with unknown j moved by `amount` along its direction (and the group its surface drags).
+  auto moveUnknown = [&](int j, double amount) {
+    std::vector<std::array<double, 2>> d = zero;
+    const auto& dir = m_unknowns[j].direction;
+    d[m_step.moves[m_unknowns[j].move].node] = {amount * dir[0], amount * dir[1]};
+    for (const FreeSurfaceStep::Drag& drag : m_step.drags)
+      if (drag.end == m_unknowns[j].move) d[drag.node] = {drag.fraction * amount * dir[0], drag.fraction * amount * dir[1]};
+    sim.moveNodes(extension.positions(d));
+  };
+
+  // Pass 1, the positions: ∂R/∂b_j (with the interior following), ∂U/∂b_j, ∂φ/∂b_j.
+  const double eps = 1e-6 * sim.freeSurfaces().lengthScale();
+  MultiVector rx(q.getMap(), nb);
+  m_G.shape(nb, nb);
+  m_phiB.assign(responses ? nb : 0, {});
+  m_phiQ.assign(responses ? nb : 0, {});
+  Vector rPlus(q.getMap()), rMinus(q.getMap());
+  try {
+    for (int j = 0; j < nb; ++j) {
+      moveUnknown(j, eps);
+      sim.model().assembler().residual(q, rPlus);
+      const std::vector<double> uPlus = updateAt(q);
+      const auto phiPlus = responses ? responsesAt(q) : std::map<std::string, double>();
+      moveUnknown(j, -eps);
+      sim.model().assembler().residual(q, rMinus);
+      const std::vector<double> uMinus = updateAt(q);
+      const auto phiMinus = responses ? responsesAt(q) : std::map<std::string, double>();
+      rx.getVectorNonConst(j)->update(-1.0 / (2 * eps), rPlus, 1.0 / (2 * eps), rMinus, 0.0);  // −∂R/∂b_j
+      for (int i = 0; i < nb; ++i) m_G(i, j) = (uPlus[i] - uMinus[i]) / (2 * eps);
+      for (const auto& [name, value] : phiPlus) m_phiB[j][name] = (value - phiMinus.at(name)) / (2 * eps);
+    }
+  } catch (const std::exception& e) {  // a move that inverts a cell
+    sim.moveNodes(base.coords);
+    m_failure = std::string("moving a surface node: ") + e.what();
+    return;
+  }
+  sim.moveNodes(base.coords);
+
+  // Y = −K_t⁻¹ ∂R/∂b with the factors at the state; then U_q Y_j (and φ_q Y_j).
+  FlowModel& model = sim.model();
+  model.restartLinearization();
+  model.computeJacobian(q);
+  MultiVector Y(q.getMap(), nb);
+  model.solve(rx, Y);
+  for (int j = 0; j < nb; ++j) {
+    const Vector y = *Y.getVector(j);
+    const std::vector<double> dU = updateAlong(y);
+    for (int i = 0; i < nb; ++i) m_G(i, j) += dU[i];
+    if (responses) {
+      const double delta = 1e-6 * std::max(q.normInf(), 1e-300) / std::max(y.normInf(), 1e-300);
+      Vector x(q, Teuchos::Copy);
+      x.update(delta, y, 1.0);
+      const auto plus = responsesAt(x);
+      x.update(-2.0 * delta, y, 1.0);
+      const auto minus = responsesAt(x);
+      for (const auto& [name, value] : plus) m_phiQ[j][name] = (value - minus.at(name)) / (2 * delta);
+    }
+  }
+  // Spectral radius by power iteration.
+  std::vector<double> v(nb, 1.0), w(nb);
+  for (int it = 0; it < 200; ++it) {
+    for (int i = 0; i < nb; ++i) {
+      w[i] = 0.0;
+      for (int j = 0; j < nb; ++j) w[i] += m_G(i, j) * v[j];
+    }
+    m_spectralRadius = 0.0;
+    for (double x : w) m_spectralRadius = std::max(m_spectralRadius, std::abs(x));
+    if (!(m_spectralRadius > 0.0)) break;
+    for (int i = 0; i < nb; ++i) v[i] = w[i] / m_spectralRadius;
+  }
+}
+
+std::vector<double> UpdateLinearization::updateAt(const Vector& x) const {
+  const FreeSurfaceStep s = m_sim.freeSurfaces().step(m_sim.mesh(), m_sim.dofMap(), replicate(x, m_sim.dofMap()),
+                                                      m_sim.contactWalls(), m_sim.physics().kernel.geometry, kNoRelease);
+  std::vector<double> u(m_unknowns.size(), 0.0);
+  for (size_t j = 0; j < m_unknowns.size(); ++j) {
+    const FreeSurfaceStep::Move& m = s.moves[m_unknowns[j].move];
+    const auto& p = m_sim.mesh().coords[m.node];
+    const auto& d = m_unknowns[j].direction;
+    u[j] = (p[0] + m.residual[0]) * d[0] + (p[1] + m.residual[1]) * d[1];  // where the update puts it
+  }
+  return u;
+}
+
+std::map<std::string, double> UpdateLinearization::responsesAt(const Vector& x) const {
+  return m_sim.responses().evaluate(x, m_sim.mesh(), m_sim.dofMap(), m_sim.model().assembler(), m_sim.contactWalls());
+}
+
+std::vector<double> UpdateLinearization::updateAlong(const Vector& d) const {
+  const Vector& q = *m_state;
+  const double delta = 1e-6 * std::max(q.normInf(), 1e-300) / std::max(d.normInf(), 1e-300);
+  Vector x(q, Teuchos::Copy);
+  x.update(delta, d, 1.0);
+  const std::vector<double> plus = updateAt(x);
+  x.update(-2.0 * delta, d, 1.0);
+  const std::vector<double> minus = updateAt(x);
+  std::vector<double> dU(plus.size());
+  for (size_t i = 0; i < plus.size(); ++i) dU[i] = (plus[i] - minus[i]) / (2 * delta);
+  return dU;
+}
+
+bool UpdateLinearization::solve(const Teuchos::SerialDenseMatrix<int, double>& B,
+                                Teuchos::SerialDenseMatrix<int, double>& X) const {
+  const int nb = size();
+  Teuchos::SerialDenseMatrix<int, double> A(nb, nb), rhs(B);
+  for (int i = 0; i < nb; ++i)
+    for (int j = 0; j < nb; ++j) A(i, j) = (i == j ? 1.0 : 0.0) - m_G(i, j);
+  X.shape(nb, B.numCols());
+  Teuchos::SerialDenseSolver<int, double> solver;
+  solver.setMatrix(Teuchos::rcpFromRef(A));
+  solver.setVectors(Teuchos::rcpFromRef(X), Teuchos::rcpFromRef(rhs));
+  solver.factorWithEquilibration(true);
+  return solver.factor() == 0 && solver.solve() == 0;
+}
+
+bool UpdateLinearization::newtonMoves(std::vector<std::array<double, 2>>& moves) const {
+  const int nb = size();
+  Teuchos::SerialDenseMatrix<int, double> r(nb, 1), delta;
+  for (int j = 0; j < nb; ++j) {
+    const FreeSurfaceStep::Move& m = m_step.moves[m_unknowns[j].move];
+    r(j, 0) = m.residual[0] * m_unknowns[j].direction[0] + m.residual[1] * m_unknowns[j].direction[1];
+  }
+  if (!solve(r, delta)) return false;
+  moves.assign(m_step.moves.size(), {0.0, 0.0});
+  std::vector<char> unknown(m_step.moves.size(), 0);
+  for (int j = 0; j < nb; ++j) {
+    const size_t i = m_unknowns[j].move;
+    unknown[i] = 1;
+    moves[i][0] += delta(j, 0) * m_unknowns[j].direction[0];
+    moves[i][1] += delta(j, 0) * m_unknowns[j].direction[1];
+  }
+  for (size_t i = 0; i < moves.size(); ++i)
+    if (!unknown[i]) moves[i] = m_step.moves[i].residual;
+  return true;
+}
+
+}  // namespace flowform
