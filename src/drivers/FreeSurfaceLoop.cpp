@@ -24,8 +24,9 @@ Teuchos::RCP<const Teuchos::ParameterList> FreeSurfaceLoop::validParameters() {
   Teuchos::setStringToIntegralParameter<int>(
       "Relaxation", "Aitken",
       "None: every update moves the surface nodes onto the streamline of the current flow (the paper's); Aitken: "
-      "they move by ω times that, ω from Aitken's Δ² rule on successive updates (docs/theory.md §3)",
-      Teuchos::tuple<std::string>("None", "Aitken"), valid.get());
+      "they move by ω times that, ω from Aitken's Δ² rule on successive updates; Newton: a Newton step on the "
+      "positions with the linearized update (two residual assemblies per surface node per update; docs/theory.md §3)",
+      Teuchos::tuple<std::string>("None", "Aitken", "Newton"), valid.get());
   valid->set("Move Tolerance", 1e-4,
              "and when the largest node move of the next update is below this fraction of the surface's length",
              Teuchos::rcp(new EnhancedNumberValidator<double>(1e-14, 1.0)));
@@ -47,7 +48,9 @@ FreeSurfaceLoop::FreeSurfaceLoop(const FreeSurfaces& surfaces, const Teuchos::Pa
       m_maxIterations(settings.get<int>("Maximum Iterations")),
       m_angleTolerance(settings.get<double>("Flow Angle Tolerance")),
       m_moveTolerance(settings.get<double>("Move Tolerance")),
-      m_aitken(settings.get<std::string>("Relaxation") == "Aitken") {}
+      m_relaxation(settings.get<std::string>("Relaxation") == "Aitken"   ? Relaxation::Aitken
+                   : settings.get<std::string>("Relaxation") == "Newton" ? Relaxation::Newton
+                                                                         : Relaxation::None) {}
 
 FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, const std::vector<ContactWall>& walls,
                                        Geometry geometry, const Hooks& hooks, double toleranceScale) const {
@@ -72,7 +75,7 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
       break;
     }
     report.motionSeconds += since(t);
-    if (m_aitken) {
+    if (m_relaxation == Relaxation::Aitken) {
       if (previousResidual.size() == step.residual.size() && step.released.empty()) {
         double num = 0.0, den = 0.0;
         for (size_t i = 0; i < step.residual.size(); ++i) {
@@ -87,6 +90,16 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
       previousResidual = step.residual;
     }
     step.relax(relaxation);
+    std::string newtonFailure;
+    if (m_relaxation == Relaxation::Newton && !(step.maxFlowAngle <= angleLimit && step.maxMove <= moveLimit)) {
+      // With a status change pending (released nodes) the linearization's unknowns differ: plain.
+      std::vector<std::array<double, 2>> moves;
+      if (!step.released.empty()) newtonFailure = "a contact status changes";
+      else if (hooks.newtonMoves && hooks.newtonMoves(step, moves, newtonFailure) && moves.size() == step.moves.size())
+        step.setMoves(moves);
+      else log() << "flowform: free surface " << report.iterations << ": no Newton step (" << newtonFailure
+                 << "); the plain update instead\n";
+    }
     report.flowAngle = step.maxFlowAngle;
     report.move = step.maxMove;
     log() << "flowform: free surface " << report.iterations << ": max |u.n|/|u| = " << step.maxFlowAngle

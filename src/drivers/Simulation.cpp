@@ -13,6 +13,7 @@
 #include "flowform/discretization/SolutionTransfer.hpp"
 #include "flowform/drivers/CaseParameters.hpp"
 #include "flowform/drivers/OutputFields.hpp"
+#include "flowform/drivers/UpdateLinearization.hpp"
 #include "flowform/io/BoundaryCsvWriter.hpp"
 #include "flowform/io/JsonSummary.hpp"
 #include "flowform/io/XdmfWriter.hpp"
@@ -197,6 +198,16 @@ FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vect
     m_walls[w].setActive(k, false);
     log() << "contact: " << m_walls[w].name() << " node " << m_walls[w].curve().nodes[k]
           << " released: the separated surface passes below it\n";
+  };
+  hooks.newtonMoves = [&](const FreeSurfaceStep&, std::vector<std::array<double, 2>>& moves, std::string& why) {
+    // The linearization reads the run's own state: a perturbed run's (x ≠ m_solution) has none.
+    if (&x != m_solution.get()) {
+      why = "not in a finite-difference run";
+      return false;
+    }
+    const UpdateLinearization lin(*this, false);
+    why = lin.failure();
+    return why.empty() && lin.newtonMoves(moves);
   };
   hooks.resolve = [&](int& newton, int& changes, std::string& why) {
     // Each shape is a new contact problem: the per-node change counts start again (the loop's

@@ -165,14 +165,17 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
 }
 
 void FreeSurfaceStep::relax(double omega) {
+  std::vector<std::array<double, 2>> scaled(moves.size());
+  for (size_t i = 0; i < moves.size(); ++i) scaled[i] = {omega * moves[i].residual[0], omega * moves[i].residual[1]};
+  setMoves(scaled);
+}
+
+void FreeSurfaceStep::setMoves(const std::vector<std::array<double, 2>>& perMove) {
   std::vector<std::array<double, 2>> moved(moves.size());
   for (size_t i = 0; i < moves.size(); ++i) {
     const Move& m = moves[i];
-    std::array<double, 2> d{omega * m.residual[0], omega * m.residual[1]};
-    const double along = dot(d, m.normal);
-    if (!m.arcLength && along > m.room) {  // never into the tool
-      d = {m.room * m.normal[0], m.room * m.normal[1]};
-    }
+    std::array<double, 2> d = perMove[i];
+    if (!m.arcLength && dot(d, m.normal) > m.room) d = {m.room * m.normal[0], m.room * m.normal[1]};  // not into the tool
     moved[i] = d;
     displacement[m.node] = d;
     prescribed[m.node] = 1;

@@ -54,6 +54,11 @@ class FreeSurfaceLoop {
     std::function<bool(int& newtonIterations, int& contactChanges, std::string& message)> resolve;
     /// Releases node k of wall w (an active node a separated surface does not reach).
     std::function<void(int w, int k)> release;
+    /// Relaxation = Newton: the move of each entry of step.moves for one Newton step on the
+    /// positions, from the linearized update at the current state (UpdateLinearization); false
+    /// (with the reason) when it cannot be made.
+    std::function<bool(const FreeSurfaceStep& step, std::vector<std::array<double, 2>>& moves, std::string& why)>
+        newtonMoves;
   };
 
   /// `settings` is the validated "Free Surface" sublist.
@@ -71,7 +76,7 @@ class FreeSurfaceLoop {
   const FreeSurfaces& m_surfaces;
   int m_maxIterations;
   double m_angleTolerance, m_moveTolerance;
-  bool m_aitken;
+  enum class Relaxation { None, Aitken, Newton } m_relaxation;
 };
 
 }  // namespace flowform

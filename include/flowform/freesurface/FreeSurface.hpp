@@ -73,6 +73,9 @@ struct FreeSurfaceStep {
   std::vector<Drag> drags;
   /// Sets the displacements to ω times the residuals (no node past its tool).
   void relax(double omega);
+  /// Sets the displacements to the given move of each entry of `moves` (no node past its tool;
+  /// the dragged groups follow their surfaces' ends).
+  void setMoves(const std::vector<std::array<double, 2>>& perMove);
   double maxFlowAngle = 0.0;        ///< max over surface segments of |ū·n|/|ū| at the current positions
   double maxMove = 0.0;             ///< largest |residual|: the move of the plain (unrelaxed) update
   std::vector<double> residual;     ///< the moves' residuals along their directions, in order (Aitken's vector)
