@@ -146,8 +146,13 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
       converge();
       continue;
     }
+    report.unsettledContacts = 0;
     if (d.wall < 0) {
-      if (d.unsettled > 0) {
+      if (d.unsettled > 0 && m_tolerateCycling) {
+        report.unsettledContacts = d.unsettled;
+        log() << "contact: " << d.unsettled << " node(s) cycle between active and free; left as they are while "
+              << "the free surfaces move\n";
+      } else if (d.unsettled > 0) {
         report.converged = false;
         report.message = std::to_string(d.unsettled) + " contact node(s) cycle between active and free (each changed " +
                          std::to_string(m_maxPerNode) + " times) and still violate their criterion";

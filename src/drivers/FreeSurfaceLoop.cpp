@@ -102,21 +102,25 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     }
     report.flowAngle = step.maxFlowAngle;
     report.move = step.maxMove;
-    log() << "flowform: free surface " << report.iterations << ": max |u.n|/|u| = " << step.maxFlowAngle
+    const int unsettled = hooks.unsettledContacts ? hooks.unsettledContacts() : 0;
+    log() << "flowform: free surface " << report.iterations << ": max |u.n|/|u| = " << step.maxFlowAngle << " at ("
+          << step.worstSegment[0] << ", " << step.worstSegment[1] << ")"
           << ", next move " << step.maxMove << (step.clampedToTool ? ", " + std::to_string(step.clampedToTool) +
                                                                          " node(s) back on the tool"
                                                                    : std::string())
           << (step.released.empty() ? std::string()
                                     : ", " + std::to_string(step.released.size()) + " contact node(s) not reached")
+          << (unsettled ? ", " + std::to_string(unsettled) + " contact node(s) cycling" : std::string())
           << "\n";
-    if (step.maxFlowAngle <= angleLimit && step.maxMove <= moveLimit && step.released.empty()) {
+    if (step.maxFlowAngle <= angleLimit && step.maxMove <= moveLimit && step.released.empty() && unsettled == 0) {
       report.converged = true;
       break;
     }
     if (report.iterations >= maxIterations) {
       report.message = "the free surfaces did not converge in " + std::to_string(maxIterations) +
                        " updates (Free Surface/Maximum Iterations) (max |u.n|/|u| = " +
-                       std::to_string(step.maxFlowAngle) + ", node move " + std::to_string(step.maxMove) + ")";
+                       std::to_string(step.maxFlowAngle) + ", node move " + std::to_string(step.maxMove) +
+                       (unsettled ? ", " + std::to_string(unsettled) + " contact node(s) cycling" : std::string()) + ")";
       break;
     }
     for (const auto& [w, k] : step.released) hooks.release(w, k);

@@ -78,6 +78,9 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   m_model = std::make_unique<FlowModel>(
       *m_assembler, createLinearSolver(m_params.sublist("Solver").sublist("Linear Solver"), *comm));
   m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
+  // A wall whose released nodes are a free surface: its separation point may cycle until the
+  // surface has settled; the free-surface loop decides (it does not converge while any cycle).
+  for (const ContactWall& wall : m_walls) if (wall.releasedFreeSurface()) m_statusLoop->tolerateCycling(true);
   m_freeSurfaces = std::make_unique<FreeSurfaces>(bcList, m_mesh, m_walls);
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
@@ -128,7 +131,7 @@ const SolveReport& Simulation::run() {
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged && !m_freeSurfaces->empty()) {
-    m_freeSurfaceReport = convergeFreeSurfaces(solver, *m_solution, m_physics);
+    m_freeSurfaceReport = convergeFreeSurfaces(solver, *m_solution, m_physics, m_report.unsettledContacts);
     m_report.newtonIterations += m_freeSurfaceReport.newtonIterations;
     m_contactChanges += m_freeSurfaceReport.contactChanges;
     if (!m_freeSurfaceReport.converged) {
@@ -187,8 +190,10 @@ void Simulation::startFrom(const Simulation& other, bool decideZoneLimits) {
 }
 
 FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
+                                                   int unsettledAtStart,
                                                    double toleranceScale) {
   FreeSurfaceLoop::Hooks hooks;
+  int unsettled = unsettledAtStart;  // contact nodes the last solve left cycling
   hooks.velocities = [&] { return replicate(x, *m_dofMap); };
   hooks.moveNodes = [&](const std::vector<std::array<double, 2>>& coords) {
     moveNodes(coords);
@@ -217,8 +222,10 @@ FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vect
     if (r.converged && !m_walls.empty()) changes = m_statusLoop->run(solver, x, physics, m_walls, r);
     newton = r.newtonIterations;
     why = r.message;
+    unsettled = r.unsettledContacts;
     return r.converged;
   };
+  hooks.unsettledContacts = [&] { return unsettled; };
   return FreeSurfaceLoop(*m_freeSurfaces, m_params.sublist("Free Surface"))
       .run(m_mesh, *m_dofMap, m_walls, physics.kernel.geometry, hooks, toleranceScale);
 }
@@ -278,8 +285,9 @@ PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double de
   PerturbedRun run;
   SolveReport report = solver.resolve(*x, physics);
   if (report.converged && !m_walls.empty()) run.contactChanges = m_statusLoop->run(solver, *x, physics, m_walls, report);
-  run.converged = report.converged;
-  run.message = report.message;
+  run.converged = report.converged && report.unsettledContacts == 0;
+  run.message = report.unsettledContacts ? std::to_string(report.unsettledContacts) + " contact node(s) cycle on the "
+                                           "frozen shape" : report.message;
   run.newtonIterations = report.newtonIterations;
   run.x = x;
   if (run.converged) {
@@ -290,7 +298,8 @@ PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double de
     // The same perturbation with the surfaces re-converged: the total derivative's difference.
     const std::vector<std::array<double, 2>> shape = m_mesh.coords;
     Vector moving(*x, Teuchos::Copy);
-    const FreeSurfaceReport surfaces = convergeFreeSurfaces(solver, moving, physics, kFiniteDifferenceSurfaceTolerance);
+    const FreeSurfaceReport surfaces =
+        convergeFreeSurfaces(solver, moving, physics, report.unsettledContacts, kFiniteDifferenceSurfaceTolerance);
     run.newtonIterations += surfaces.newtonIterations;
     if (surfaces.converged) {
       run.movingFunctionals = m_responses->evaluate(moving, m_mesh, *m_dofMap, *m_assembler, m_walls);

@@ -117,6 +117,11 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
       if (!other.isStraight(1e-8))
         throw InputError(where + ": group '" + g.name + "' at the surface's downstream end must be straight");
       const auto& n = other.segmentNormals.front();
+      if (arcLength) {
+        s.endOnLine = true;
+        s.endLinePoint = mesh.coords[end];
+        s.endLineNormal = n;
+      }
       if (!arcLength && std::abs(dot(n, s.normal)) > 1e-8)
         throw InputError(where + ": group '" + g.name + "' at the surface's downstream end must run along the "
                          "surface's normal (its end node moves along it)");
@@ -180,8 +185,14 @@ void FreeSurfaceStep::setMoves(const std::vector<std::array<double, 2>>& perMove
     displacement[m.node] = d;
     prescribed[m.node] = 1;
   }
-  for (const Drag& d : drags) displacement[d.node] = {0.0, 0.0};
+  // A dragged group between two surfaces' ends (a chip's outlet) holds each end in the other's
+  // drag list (fraction 0): an end is moved by its own surface, never dragged.
+  std::vector<char> isMove(displacement.size(), 0);
+  for (const Move& m : moves) isMove[m.node] = 1;
+  for (const Drag& d : drags)
+    if (!isMove[d.node]) displacement[d.node] = {0.0, 0.0};
   for (const Drag& d : drags) {
+    if (isMove[d.node]) continue;
     displacement[d.node][0] += d.fraction * moved[d.end][0];
     displacement[d.node][1] += d.fraction * moved[d.end][1];
     prescribed[d.node] = 1;
@@ -191,9 +202,10 @@ void FreeSurfaceStep::setMoves(const std::vector<std::array<double, 2>>& perMove
 bool FreeSurfaces::arcLengthStep(const Surface& s, const Mesh& mesh,
                                  const std::function<std::array<double, 2>(GO)>& velocity, Geometry geometry,
                                  FreeSurfaceStep& out) const {
-  // Arc length: x_{k+1} = x_k + L_k ū/|ū| from the fixed start, L_k the segment's length as made.
+  // Arc length: x_{k+1} = x_k + L_k ū/|ū| from the fixed start, L_k the segment's length as made
+  // (the streamline's polyline, with the directions of the current segments' mean velocities) ...
   const size_t n = s.nodes.size();
-  std::vector<Point> x(n), xNew(n);
+  std::vector<Point> x(n), xNew(n), direction(n - 1);
   for (size_t k = 0; k < n; ++k) x[k] = mesh.coords[s.nodes[k]];
   xNew[0] = x[0];
   for (size_t k = 0; k + 1 < n; ++k) {
@@ -204,8 +216,27 @@ bool FreeSurfaces::arcLengthStep(const Surface& s, const Mesh& mesh,
                     std::to_string(x[k][1]) + ")";
       return false;
     }
-    out.maxFlowAngle = std::max(out.maxFlowAngle, flowAngle(x[k], x[k + 1], mean));
-    xNew[k + 1] = {xNew[k][0] + s.segmentLength[k] * mean[0] / speed, xNew[k][1] + s.segmentLength[k] * mean[1] / speed};
+    out.noteFlowAngle(flowAngle(x[k], x[k + 1], mean), x[k], x[k + 1]);
+    direction[k] = {mean[0] / speed, mean[1] / speed};
+    xNew[k + 1] = {xNew[k][0] + s.segmentLength[k] * direction[k][0], xNew[k][1] + s.segmentLength[k] * direction[k][1]};
+  }
+  // ... then, with a straight group at the end, every length scaled by the one λ that puts the
+  // last node on that group's line g(x) = (x − p)·ν = 0 (as made): x_{n−1} = x_0 + λ Σ L_k d_k,
+  // so λ = −g(x_0) / (Σ L_k d_k · ν), which must be positive.
+  if (s.endOnLine) {
+    Point reach{0.0, 0.0};
+    for (size_t k = 0; k + 1 < n; ++k)
+      reach = {reach[0] + s.segmentLength[k] * direction[k][0], reach[1] + s.segmentLength[k] * direction[k][1]};
+    const double towards = dot(reach, s.endLineNormal), start = dot(minus(x[0], s.endLinePoint), s.endLineNormal);
+    const double scale = towards > 0.0 ? -start / towards : -1.0;
+    if (!(scale > 0.0)) {
+      out.failure = "free surface '" + s.name + "' does not reach the line of the group at its end: the flow along it "
+                    "runs along or away from that line";
+      return false;
+    }
+    for (size_t k = 0; k + 1 < n; ++k)
+      xNew[k + 1] = {xNew[k][0] + scale * s.segmentLength[k] * direction[k][0],
+                     xNew[k][1] + scale * s.segmentLength[k] * direction[k][1]};
   }
   const size_t first = out.moves.size();
   for (size_t k = 0; k < n; ++k) {
@@ -269,7 +300,7 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
           free[k + 1] = 1;
           integrated[k + 1] = 1;
           out.released.push_back({s.wall, s.wallIndex[k + 1]});
-          out.maxFlowAngle = std::max(out.maxFlowAngle, angle);
+          out.noteFlowAngle(angle, mesh.coords[na], mesh.coords[nb]);
         } else {
           bNew[k + 1] = s.tool[k + 1];
         }
@@ -281,7 +312,7 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
         bNew[k + 1] = s.tool[k + 1];
         ++out.clampedToTool;
       } else {
-        out.maxFlowAngle = std::max(out.maxFlowAngle, angle);
+        out.noteFlowAngle(angle, mesh.coords[na], mesh.coords[nb]);
         integrated[k + 1] = 1;
       }
     }

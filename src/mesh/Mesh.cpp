@@ -80,8 +80,12 @@ void Mesh::setCoordinates(const std::vector<std::array<double, 2>>& newCoords) {
   std::array<double, 2> xy[4];
   for (GO c = 0; c < numCells(); ++c) {
     for (int a = 0; a < npc; ++a) xy[a] = newCoords[cell(c)[a]];
-    if (cellOrientation(cellType, xy).kind != CellOrientation::Kind::CounterClockwise)
-      throw InputError("mesh '" + source + "': moving the nodes inverts or degenerates cell " + std::to_string(c));
+    if (cellOrientation(cellType, xy).kind != CellOrientation::Kind::CounterClockwise) {
+      double cx = 0.0, cy = 0.0;  // where it is (as it was), for the message
+      for (int a = 0; a < npc; ++a) cx += coords[cell(c)[a]][0] / npc, cy += coords[cell(c)[a]][1] / npc;
+      throw InputError("mesh '" + source + "': moving the nodes inverts or degenerates cell " + std::to_string(c) +
+                       " at (" + std::to_string(cx) + ", " + std::to_string(cy) + ")");
+    }
   }
   coords = newCoords;
 }

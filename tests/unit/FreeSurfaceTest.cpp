@@ -124,20 +124,20 @@ TEUCHOS_UNIT_TEST(FreeSurface, SpineUpdateFollowsUniformFlow) {
 }
 
 TEUCHOS_UNIT_TEST(FreeSurface, ArcLengthUpdateTurnsWithUniformFlow) {
-  // Arc length: the flat top (from x = 0) becomes the straight line along u = (1, s) with every
-  // segment's length kept; the right side, dragged from its fixed bottom end, follows the end.
+  // Arc length: the flat top (from x = 0) becomes the straight line along u = (1, s), every
+  // segment's length scaled by the one factor λ = √(1 + s²) that keeps its end on the line of the
+  // right side (x = 2, as made); the right side, dragged from its fixed bottom end, follows the end.
   const double slope = 0.5;
   SpineCase c(slope);
   c.bc.sublist("top").set("Update", "Arc Length");
   const FreeSurfaces surfaces(c.bc, c.mesh, {});
   const FreeSurfaceStep step = surfaces.step(c.mesh, *c.dofMap, c.u, {}, Geometry::PlaneStrain, 1e-9);
   TEST_ASSERT(step.failure.empty());
-  const double norm = std::sqrt(1.0 + slope * slope);
   for (const auto& e : c.mesh.boundary("top").edges)
     for (GO n : e) {
       const double s0 = c.mesh.coords[n][0];  // arc length from the start (0, 1) as made
-      TEST_FLOATING_EQUALITY(c.mesh.coords[n][0] + step.displacement[n][0] + 1.0, s0 / norm + 1.0, 1e-12);
-      TEST_FLOATING_EQUALITY(c.mesh.coords[n][1] + step.displacement[n][1], 1.0 + slope * s0 / norm, 1e-12);
+      TEST_FLOATING_EQUALITY(c.mesh.coords[n][0] + step.displacement[n][0] + 1.0, s0 + 1.0, 1e-12);
+      TEST_FLOATING_EQUALITY(c.mesh.coords[n][1] + step.displacement[n][1], 1.0 + slope * s0, 1e-12);
     }
   const GO end = 4 * 9 + 8;  // (2, 1)
   for (const auto& e : c.mesh.boundary("right").edges)

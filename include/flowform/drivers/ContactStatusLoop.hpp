@@ -30,6 +30,12 @@ class ContactStatusLoop {
   int run(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics, std::vector<ContactWall>& walls,
           SolveReport& report) const;
 
+  /// While free surfaces move, a node at a separation point may cycle because the shape is not
+  /// yet the flow's (free, it sits on the tool and the flow pushes in; active, it pulls): with
+  /// this set, such nodes are left as they are, counted in SolveReport::unsettledContacts, and the
+  /// run stays converged; the free-surface loop does not converge while any are left.
+  void tolerateCycling(bool on) { m_tolerateCycling = on; }
+
  private:
   /// One decision of the loop: the change (wall −1: none), the runner-up's violation in the
   /// class the change came from, and the nodes that may not change again but violate.
@@ -58,6 +64,7 @@ class ContactStatusLoop {
   static constexpr int kMaxStepsPerChange = 8;  ///< then the re-solve is converged in one go
   static constexpr double kContraction = 0.5;  ///< ||F|| reduction of a step that makes an iterate readable
   int m_maxChanges, m_maxPerNode;
+  bool m_tolerateCycling = false;
   double m_pressureTolerance, m_penetrationTolerance;
   double m_resolveTolerance;  ///< relative residual of the intermediate re-solves (0: tight)
   bool m_certainIterate;      ///< Status Update = Certain Iterate

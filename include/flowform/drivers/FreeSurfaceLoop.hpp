@@ -54,6 +54,9 @@ class FreeSurfaceLoop {
     std::function<bool(int& newtonIterations, int& contactChanges, std::string& message)> resolve;
     /// Releases node k of wall w (an active node a separated surface does not reach).
     std::function<void(int w, int k)> release;
+    /// Contact nodes the last solve left cycling (ContactStatusLoop::tolerateCycling); the loop
+    /// does not converge while there are any. Optional (none).
+    std::function<int()> unsettledContacts;
     /// Relaxation = Newton: the move of each entry of step.moves for one Newton step on the
     /// positions, from the linearized update at the current state (UpdateLinearization); false
     /// (with the reason) when it cannot be made.

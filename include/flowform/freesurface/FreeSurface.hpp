@@ -22,6 +22,12 @@
 // and the surface).
 // The node at the downstream end drags the straight group that ends there (the outlet): its
 // nodes move by the same displacement times their arc-length fraction from their other end.
+//
+// Arc length (a surface that turns: a chip's back): x_{k+1} = x_k + λ L_k ū_k/|ū_k| from the fixed
+// start, L_k the segment lengths as made and λ the one factor that puts the last node on the line
+// of the straight group at the end (the chip's outlet stays where it was made; without the factor
+// the surface's length would be fixed and its end would leave the outlet's line as the chip's
+// corner moves).
 #pragma once
 
 #include <array>
@@ -77,6 +83,13 @@ struct FreeSurfaceStep {
   /// the dragged groups follow their surfaces' ends).
   void setMoves(const std::vector<std::array<double, 2>>& perMove);
   double maxFlowAngle = 0.0;        ///< max over surface segments of |ū·n|/|ū| at the current positions
+  std::array<double, 2> worstSegment{};  ///< the midpoint of the segment where it is
+  void noteFlowAngle(double angle, const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    if (!(angle <= maxFlowAngle)) {
+      maxFlowAngle = angle;
+      worstSegment = {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])};
+    }
+  }
   double maxMove = 0.0;             ///< largest |residual|: the move of the plain (unrelaxed) update
   std::vector<double> residual;     ///< the moves' residuals along their directions, in order (Aitken's vector)
   int clampedToTool = 0;            ///< free wall nodes the update put back on their tool
@@ -116,7 +129,11 @@ class FreeSurfaces {
     std::vector<double> along;   ///< a_k, fixed
     std::vector<double> tool;    ///< a wall: b_k of the tool (as made); its nodes stay at b ≤ tool
     bool arcLength = false;      ///< Update = Arc Length (else spines)
-    std::vector<double> segmentLength;  ///< as made: kept by the arc-length update
+    std::vector<double> segmentLength;  ///< as made: kept (up to one common factor) by the arc-length update
+    /// Arc length with a straight group at the end: the line through it (as made), on which the
+    /// surface's last node stays (a point of it and its unit normal).
+    bool endOnLine = false;
+    std::array<double, 2> endLinePoint{}, endLineNormal{};
     std::vector<GO> dragged;     ///< the nodes of the straight group at the downstream end
     std::vector<double> dragFraction;  ///< their arc-length fraction from the group's other end
   };

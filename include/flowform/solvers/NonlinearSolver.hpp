@@ -64,6 +64,9 @@ struct SolveReport {
   std::vector<int> newtonPerSolve;
   int restarts = 0;  ///< re-solves that failed and started again from the predictor
   bool stoppedAtCap = false;  ///< a resolve() that stopped at NewtonOptions::maxIterations
+  /// Contact nodes left cycling between active and free by a status loop that tolerates them
+  /// (ContactStatusLoop::tolerateCycling: while free surfaces move); 0 otherwise.
+  int unsettledContacts = 0;
   /// converged, linear_problem, newton_iterations, continuation_stages, residual_norm,
   /// stages, message and "solves" (newton_iterations per solve, restarts) into the summary.
   void report(nlohmann::json& summary) const;
