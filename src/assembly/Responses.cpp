@@ -27,12 +27,19 @@ Teuchos::RCP<const Teuchos::ParameterList> Responses::validParameters() {
       "Type", "Boundary Force", "what to compute (see include/flowform/assembly/Responses.hpp)",
       Teuchos::tuple<std::string>("Boundary Force", "Mean Pressure", "Boundary Power", "Flow Rate", "Plastic Power",
                                   "Friction Power", "Penalty Power", "Stabilization Power", "Dead Zone",
-                                  "Boundary Extent", "Wall Gap"),
+                                  "Boundary Extent", "Wall Gap", "Contact Length", "Wall Force", "Thickness Ratio",
+                                  "Shear Angle"),
       valid.get());
   valid->set("Boundary", "",
-             "boundary group (Boundary Force, Mean Pressure, Boundary Power, Flow Rate, Boundary Extent) or contact "
-             "wall (Wall Gap)");
-  Teuchos::setStringToIntegralParameter<int>("Component", "X", "force component (Boundary Force), coordinate (Boundary Extent)",
+             "boundary group (Boundary Force, Mean Pressure, Boundary Power, Flow Rate, Boundary Extent; Thickness "
+             "Ratio and Shear Angle: the group a stream leaves through, e.g. a chip's outlet) or contact wall (Wall "
+             "Gap, Contact Length, Wall Force)");
+  valid->set("Reference Thickness", 1.0,
+             "Thickness Ratio, Shear Angle: the thickness t the stream had upstream (cutting: the uncut thickness) "
+             "[length]", Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(1e-300, 1e300)));
+  valid->set("Rake Angle", 0.0, "Shear Angle: the tool's rake angle α [degrees]",
+             Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(-89.0, 89.0)));
+  Teuchos::setStringToIntegralParameter<int>("Component", "X", "force component (Boundary Force, Wall Force), coordinate (Boundary Extent)",
                                              Teuchos::tuple<std::string>("X", "Y"), valid.get());
   valid->set("Fraction", 0.01, "Dead Zone: |u| below this fraction of the reference speed",
              Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
@@ -42,11 +49,11 @@ Teuchos::RCP<const Teuchos::ParameterList> Responses::validParameters() {
 
 void Responses::checkWalls(const std::vector<ContactWall>& walls) const {
   for (const Response& r : m_responses) {
-    if (r.type != "Wall Gap") continue;
+    if (r.type != "Wall Gap" && r.type != "Contact Length" && r.type != "Wall Force") continue;
     const auto wall = std::find_if(walls.begin(), walls.end(), [&](const ContactWall& w) { return w.name() == r.boundary; });
     if (wall == walls.end())
-      throw InputError("Responses/" + r.name + "/Boundary: '" + r.boundary + "' is not a Contact Wall (a Wall Gap "
-                       "measures one)");
+      throw InputError("Responses/" + r.name + "/Boundary: '" + r.boundary + "' is not a Contact Wall (a " + r.type +
+                       " measures one)");
   }
 }
 
@@ -60,11 +67,20 @@ Responses::Responses(const Teuchos::ParameterList& list, const Mesh& mesh) {
     } catch (const std::exception& e) {
       throw InputError("Responses/" + name + ": " + e.what());
     }
-    Response resp{name, r.get<std::string>("Type"), r.get<std::string>("Boundary"), r.get<std::string>("Component"),
-                  r.get<double>("Fraction"), r.get<double>("Reference Speed")};
+    Response resp{name,
+                  r.get<std::string>("Type"),
+                  r.get<std::string>("Boundary"),
+                  r.get<std::string>("Component"),
+                  r.get<double>("Fraction"),
+                  r.get<double>("Reference Speed"),
+                  r.get<double>("Reference Thickness"),
+                  r.get<double>("Rake Angle")};
     const bool needsBoundary = resp.type == "Boundary Force" || resp.type == "Mean Pressure" ||
                                resp.type == "Boundary Power" || resp.type == "Flow Rate" ||
-                               resp.type == "Boundary Extent" || resp.type == "Wall Gap";
+                               resp.type == "Boundary Extent" || resp.type == "Wall Gap" ||
+                               resp.type == "Contact Length" || resp.type == "Wall Force" ||
+                               resp.type == "Thickness Ratio" ||
+                               resp.type == "Shear Angle";
     if (needsBoundary && !mesh.hasBoundary(resp.boundary))
       throw InputError("Responses/" + name + "/Boundary: mesh '" + mesh.source + "' has no boundary group '" +
                        resp.boundary + "'; it has: " + mesh.boundaryNames());
@@ -262,6 +278,62 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
             firstIsUpstream = firstIsUpstream || e[0] == wall.curve().nodes.front() || e[1] == wall.curve().nodes.front();
           values[r.name] = wall.gap(firstIsUpstream ? wall.numNodes() - 1 : 0);
         }
+    } else if (r.type == "Contact Length") {
+      // The arc length along the tool from the wall's upstream end (its Start Group's end, else its
+      // first node) to the last node of the contact zone that starts there (the separation point):
+      // the zone's length, to within a segment. Piecewise constant in q: no derivative.
+      if (tangent) continue;
+      for (const ContactWall& wall : walls) {
+        if (wall.name() != r.boundary) continue;
+        const BoundaryCurve& curve = wall.curve();
+        bool firstIsUpstream = true;
+        if (!wall.upstreamGroup().empty() && mesh.hasBoundary(wall.upstreamGroup())) {
+          firstIsUpstream = false;
+          for (const auto& e : mesh.boundary(wall.upstreamGroup()).edges)
+            firstIsUpstream = firstIsUpstream || e[0] == curve.nodes.front() || e[1] == curve.nodes.front();
+        }
+        double length = 0.0;
+        for (int j = 0; j < wall.numNodes(); ++j) {
+          const int k = firstIsUpstream ? j : wall.numNodes() - 1 - j;
+          if (!wall.isActive(k)) break;
+          length = firstIsUpstream ? curve.arcLength[k] : curve.arcLength.back() - curve.arcLength[k];
+        }
+        values[r.name] = length;
+      }
+    } else if (r.type == "Thickness Ratio" || r.type == "Shear Angle") {
+      // The stream leaving through the group: its mean velocity ū = Σ_k u_k ∫N_k ds / ∫ds, its
+      // thickness normal to ū  w = |Δx × ū| / |ū|  (Δx the chord between the group's ends; a chip's
+      // outlet that the chip crosses at a slant is longer than the chip is thick), and the ratio
+      // r = t / w (t the Reference Thickness; cutting: t/t_c, the chip ratio; mass balance makes it
+      // the chip's speed over the cutting speed for a uniform stream). Shear Angle: the thin shear
+      // plane's kinematics, tan φ = r cos α / (1 − r sin α) (α the Rake Angle), in degrees.
+      const BoundaryCurve curve = buildBoundaryCurve(mesh, mesh.boundary(r.boundary));
+      const size_t numNodes = curve.nodes.size();
+      std::vector<double> w(numNodes, 0.0);
+      for (size_t sgm = 0; sgm < curve.segmentLength.size(); ++sgm) {
+        w[sgm] += 0.5 * curve.segmentLength[sgm];
+        w[(sgm + 1) % numNodes] += 0.5 * curve.segmentLength[sgm];
+      }
+      Scalar ux = 0.0, uy = 0.0;
+      for (size_t k = 0; k < numNodes; ++k) {
+        const LO n = dofMap.overlapIndex(curve.nodes[k]);
+        if (n < 0 || n >= dofMap.numOwnedNodes()) continue;
+        ux += w[k] * at(x, dofMap.dof(n, kUx));
+        uy += w[k] * at(x, dofMap.dof(n, kUy));
+      }
+      ux = sumOverRanks(comm, ux);
+      uy = sumOverRanks(comm, uy);
+      const auto& a = mesh.coords[curve.nodes.front()];
+      const auto& b = mesh.coords[curve.nodes.back()];
+      Scalar cross = (b[0] - a[0]) * uy - (b[1] - a[1]) * ux;
+      if (cross < 0.0) cross = -cross;
+      const Scalar ratio = r.referenceThickness * std::sqrt(ux * ux + uy * uy) / cross;
+      if (r.type == "Thickness Ratio") {
+        values[r.name] = ratio;
+      } else {
+        const double alpha = r.rakeAngle * M_PI / 180.0;
+        values[r.name] = std::atan2(ratio * std::cos(alpha), 1.0 - ratio * std::sin(alpha)) * (180.0 / M_PI);
+      }
     } else if (r.type == "Plastic Power" || r.type == "Stabilization Power" || r.type == "Dead Zone") {
       if (tangent && r.type == "Dead Zone") continue;  // piecewise constant in x: no derivative
       Scalar plastic, stabilization;
@@ -270,6 +342,29 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
                     stabilization, dead);
       if (r.type == "Dead Zone") values[r.name] = sumOverRanks(comm, dead);
       else values[r.name] = sumOverRanks(comm, r.type == "Plastic Power" ? plastic : stabilization);
+    } else if (r.type == "Wall Force") {
+      // The force the material exerts on a contact wall: Σ over its nodes of the wall's part of the
+      // momentum residual (normal penalty and friction), R_k = ∫ (α_n (u·n) n + g t) N_k dΓ: the
+      // cutting (X) and thrust (Y) forces on a tool. By the balance of the whole body it equals the
+      // sum of the Boundary Forces on the velocity-driven groups when the rest is traction-free.
+      for (size_t w = 0; w < walls.size(); ++w) {
+        const ContactWall& wall = walls[w];
+        if (wall.name() != r.boundary) continue;
+        const FrictionParameters<Scalar> fp = frictionFor<Scalar>(wall, static_cast<int>(w), h);
+        for (int k = 0; k < wall.numNodes(); ++k) {
+          const LO n = dofMap.overlapIndex(wall.curve().nodes[k]);
+          if (n < 0 || n >= dofMap.numOwnedNodes()) continue;
+          auto pressure = [&](int j) {
+            return j < 0 ? Scalar(0.0) : at(x, dofMap.dof(dofMap.overlapIndex(wall.curve().nodes[j]), kP));
+          };
+          const Scalar u[2] = {at(x, dofMap.dof(n, kUx)), at(x, dofMap.dof(n, kUy))};
+          const Scalar p[3] = {pressure(wall.previous(k)), at(x, dofMap.dof(n, kP)), pressure(wall.next(k))};
+          Scalar Rk[2] = {0.0, 0.0};
+          wall.addNodeResidual(k, fp, u, p, Rk);
+          local += r.component == "X" ? Rk[0] : Rk[1];
+        }
+      }
+      values[r.name] = sumOverRanks(comm, local);
     } else if (r.type == "Friction Power" || r.type == "Penalty Power") {
       for (size_t w = 0; w < walls.size(); ++w) {
         const ContactWall& wall = walls[w];

@@ -56,6 +56,14 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
       "corner node is always held by this wall (active, never released): no leak, the corner velocity is then "
       "limited to the other wall's tangent, or zero if that wall holds it too",
       Teuchos::tuple<std::string>("Open", "Closed"), valid.get());
+  Teuchos::setStringToIntegralParameter<int>(
+      "Coulomb Normal Force", "Pressure",
+      "what the Coulomb (and Orowan) bound ν N multiplies: Pressure: N = ∫ N_k p⁺ ds, the pressure lumped over the "
+      "node's active segments (the paper's eq. 17-18); Contact Force: N = max(α_n u·n, 0), the normal force the "
+      "penalty puts on the node, the normal traction ∫ N_k σ_n ds at convergence (so that under full sliding the "
+      "friction force is exactly ν times the normal force; the two differ by the deviatoric normal stress s_nn, "
+      "which is ±k on a yielding rake face; docs/cutting.md)",
+      Teuchos::tuple<std::string>("Pressure", "Contact Force"), valid.get());
   valid->set("Start Group", "",
              "a Contact Wall with Released Nodes = Free Surface: the boundary group at the wall's upstream end; a Free "
              "Surface group: the boundary group that shares its fixed start (docs/theory.md §3.1)");
@@ -90,6 +98,7 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   m_settings.releasedFreeSurface = list.get<std::string>("Released Nodes") == "Free Surface";
   m_settings.neverReleased = list.get<std::string>("Released Nodes") == "Never";
   m_settings.closedCorners = list.get<std::string>("Convex Corners") == "Closed";
+  m_settings.coulombOnContactForce = list.get<std::string>("Coulomb Normal Force") == "Contact Force";
   m_settings.upstreamGroup = list.get<std::string>("Start Group");
   if (m_settings.releasedFreeSurface && m_settings.upstreamGroup.empty())
     throw InputError("Boundary Conditions/" + group + "/Start Group: Released Nodes = Free Surface needs the "
@@ -104,6 +113,17 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   refreshGeometry(mesh);
   m_toolCoords = m_coords;
   m_toolNormals = m_curve.normals;
+  if (m_settings.releasedFreeSurface) {
+    if (!mesh.hasBoundary(m_settings.upstreamGroup))
+      throw InputError("Boundary Conditions/" + group + "/Start Group: mesh '" + mesh.source +
+                       "' has no boundary group '" + m_settings.upstreamGroup + "'; it has: " + mesh.boundaryNames());
+    for (const auto& e : mesh.boundary(m_settings.upstreamGroup).edges)
+      for (GO node : e) {
+        if (node == m_curve.nodes.front()) m_upstreamEnd = 0;
+        if (node == m_curve.nodes.back() && !m_curve.closed) m_upstreamEnd = numNodes() - 1;
+      }
+    if (m_upstreamEnd >= 0) m_active[m_upstreamEnd] = 1;
+  }
 }
 
 void ContactWall::refreshGeometry(const Mesh& mesh) {

@@ -105,7 +105,7 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     const int unsettled = hooks.unsettledContacts ? hooks.unsettledContacts() : 0;
     log() << "flowform: free surface " << report.iterations << ": max |u.n|/|u| = " << step.maxFlowAngle << " at ("
           << step.worstSegment[0] << ", " << step.worstSegment[1] << ")"
-          << ", next move " << step.maxMove << (step.clampedToTool ? ", " + std::to_string(step.clampedToTool) +
+          << ", next move " << step.maxMove << " at (" << step.largestMoveAt[0] << ", " << step.largestMoveAt[1] << ")" << (step.clampedToTool ? ", " + std::to_string(step.clampedToTool) +
                                                                          " node(s) back on the tool"
                                                                    : std::string())
           << (step.released.empty() ? std::string()

@@ -243,7 +243,7 @@ bool FreeSurfaces::arcLengthStep(const Surface& s, const Mesh& mesh,
     const Point r = minus(xNew[k], x[k]);
     out.residual.push_back(r[0]);
     out.residual.push_back(r[1]);
-    out.maxMove = std::max(out.maxMove, std::hypot(r[0], r[1]));
+    out.noteMove(std::hypot(r[0], r[1]), x[k]);
     out.moves.push_back({s.nodes[k], s.normal, r, std::numeric_limits<double>::infinity(), k > 0, true});
   }
   for (size_t k = 0; k < s.dragged.size(); ++k) out.drags.push_back({s.dragged[k], s.dragFraction[k], first + n - 1});
@@ -321,7 +321,7 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
     for (size_t k = 0; k < n; ++k) {
       const double r = bNew[k] - b[k];
       out.residual.push_back(r);
-      out.maxMove = std::max(out.maxMove, std::abs(r));
+      out.noteMove(std::abs(r), mesh.coords[s.nodes[k]]);
       const double room = wall ? s.tool[k] - b[k] : std::numeric_limits<double>::infinity();
       out.moves.push_back({s.nodes[k], s.normal, {r * s.normal[0], r * s.normal[1]}, room, integrated[k] != 0, false});
     }

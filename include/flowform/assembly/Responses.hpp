@@ -19,8 +19,19 @@
 //   Wall Gap        — the distance from its tool of a contact wall's downstream end (away from its
 //                     Start Group) when its released runs are free surfaces: the gap of the
 //                     separated product; 0 for other walls (their nodes never leave the tool)
-// The last two are positions: on a frozen shape their derivative is zero; the finite-difference
-// check with re-converged free surfaces gives the derivative through the shape.
+//   Contact Length  — the arc length along a contact wall from its upstream end (Start Group) to its
+//                     farthest active node: the tool–chip contact length (to within a segment; no
+//                     derivative, like Dead Zone)
+//   Wall Force      — the force the material exerts on a contact wall (Component X or Y): the sum of
+//                     the wall's part of the momentum residual (normal penalty and friction); a
+//                     tool's cutting and thrust forces
+//   Thickness Ratio — t / w: t the Reference Thickness, w the thickness of the stream leaving through
+//                     the group, normal to its mean velocity ū (w = |Δx × ū|/|ū|, Δx the group's
+//                     chord): cutting's chip ratio t/t_c at the chip's outlet
+//   Shear Angle     — φ from the chip ratio r and the Rake Angle α by the thin shear plane's
+//                     kinematics, tan φ = r cos α / (1 − r sin α), in degrees
+// Boundary Extent and Wall Gap are positions: on a frozen shape their derivative is zero; the
+// finite-difference check with re-converged free surfaces gives the derivative through the shape.
 // Derivatives (docs/theory.md §4, paper eq. 21): dφ/dh = ∂φ/∂h + ∂φ/∂q dq/dh is the same evaluation
 // on a directional-derivative Fad, x seeded along dq/dh and h seeded (the reactions' part
 // from Assembler::tangent). Dead Zone is piecewise constant in q and has none.
@@ -50,7 +61,7 @@ class Responses {
   /// `list` is the "Responses" sublist; InputError for a bad type or a missing group.
   Responses(const Teuchos::ParameterList& list, const Mesh& mesh);
 
-  /// InputError for a Wall Gap on a group that is not a contact wall.
+  /// InputError for a Wall Gap or Contact Length on a group that is not a contact wall.
   void checkWalls(const std::vector<ContactWall>& walls) const;
 
   /// Every response at x, the same on every rank.
@@ -85,6 +96,7 @@ class Responses {
   struct Response {
     std::string name, type, boundary, component;
     double fraction = 0.01, referenceSpeed = 1.0;
+    double referenceThickness = 1.0, rakeAngle = 0.0;  ///< Thickness Ratio, Shear Angle (degrees)
   };
   std::vector<Response> m_responses;
 };

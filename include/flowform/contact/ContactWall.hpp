@@ -56,6 +56,9 @@ struct ContactWallSettings {
   /// Convex Corners = Closed: the wall's nodes at convex tool corners are held (active, never
   /// released), so no material crosses the wall's segment there (docs/contact.md).
   bool closedCorners = false;
+  /// Coulomb Normal Force = Contact Force: the Coulomb bound is ν max(α_n u·n, 0) (the penalty's
+  /// normal force) instead of ν ∫ N_k p⁺ ds.
+  bool coulombOnContactForce = false;
 };
 
 /// What a status update decided: the wall node to change, or none (index −1).
@@ -117,8 +120,12 @@ class ContactWall {
     m_cornerNormals[k].push_back(otherNormal);
     if (m_settings.closedCorners) m_active[k] = 1;
   }
-  /// Whether node k is held active at a closed convex corner (no status change).
-  bool held(int k) const { return m_settings.closedCorners && !m_cornerNormals[k].empty(); }
+  /// Whether node k is held active (no status change): at a closed convex corner, or, on a wall
+  /// whose released nodes are a free surface, its upstream end (shared with the Start Group: the
+  /// fixed start of the surface, e.g. a cutting tool's tip, where the workpiece divides).
+  bool held(int k) const {
+    return (m_settings.closedCorners && !m_cornerNormals[k].empty()) || k == m_upstreamEnd;
+  }
 
   /// What solving changes on a wall: the statuses and their change counts, ν and m, and the
   /// penalty scales. A perturbed solve (the finite-difference check) saves it and restores it
@@ -215,6 +222,7 @@ class ContactWall {
   std::vector<char> m_active;
   std::vector<int> m_changes;
   std::vector<std::vector<std::array<double, 2>>> m_cornerNormals;
+  int m_upstreamEnd = -1;  ///< Released Nodes = Free Surface: the wall node shared with the Start Group
   std::vector<double> m_viscosity, m_flowStress;
   std::vector<std::array<double, 2>> m_coords;
   /// The tool: the node positions and normals as made. A wall whose released tail is a free
@@ -264,6 +272,11 @@ Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp
   FrictionNodeData<Scalar> d{-n[1] * u[0] + n[0] * u[1],  // u·t, t = (−n_y, n_x)
                              Scalar(0.0), 0.0, 0.0, m_settings.tangentialPenalty * m_viscosity[k] * weight(k), dual};
   lumpSegmentIntegrals(k, p, d);
+  if (m_settings.coulombOnContactForce) {
+    // N_k = max(α_n u·n, 0): the penalty's normal force on the node (its normal traction, lumped).
+    const Scalar normalForce = m_settings.normalPenalty * m_viscosity[k] * weight(k) * (n[0] * u[0] + n[1] * u[1]);
+    d.pressureIntegral = normalForce > 0.0 ? normalForce : Scalar(0.0);
+  }
   const FrictionForce<Scalar> f = frictionForce(m_settings.law, d, fp, m_settings.friction);
   if (branch) *branch = f.branch;
   return f.g;

@@ -91,6 +91,13 @@ struct FreeSurfaceStep {
     }
   }
   double maxMove = 0.0;             ///< largest |residual|: the move of the plain (unrelaxed) update
+  std::array<double, 2> largestMoveAt{};  ///< the node that has it (where it is now)
+  void noteMove(double move, const std::array<double, 2>& at) {
+    if (!(move <= maxMove)) {
+      maxMove = move;
+      largestMoveAt = at;
+    }
+  }
   std::vector<double> residual;     ///< the moves' residuals along their directions, in order (Aitken's vector)
   int clampedToTool = 0;            ///< free wall nodes the update put back on their tool
   /// Active wall nodes that a separated surface does not reach (its streamline passes below the
