@@ -122,7 +122,6 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
         if (node == m_curve.nodes.front()) m_upstreamEnd = 0;
         if (node == m_curve.nodes.back() && !m_curve.closed) m_upstreamEnd = numNodes() - 1;
       }
-    if (m_upstreamEnd >= 0) m_active[m_upstreamEnd] = 1;
   }
 }
 
@@ -152,10 +151,12 @@ void ContactWall::setScales(std::vector<double> viscosity, std::vector<double> f
 
 StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
                                      double pressureTolerance, double penetrationTolerance,
-                                     int maxChangesPerNode, int* unsettled, double* runnerUp) const {
+                                     int maxChangesPerNode, int* unsettled, double* runnerUp,
+                                     double* unsettledRatio) const {
   StatusChange atLimit, anywhere;
   double secondAtLimit = 0.0, secondAnywhere = 0.0;
   if (unsettled) *unsettled = 0;
+  if (unsettledRatio) *unsettledRatio = 0.0;
   for (int k = 0; k < numNodes(); ++k) {
     double violation = 0.0;
     if (held(k) || (m_active[k] && m_settings.neverReleased)) continue;  // no status change
@@ -172,6 +173,10 @@ StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::ve
     if (!(violation > 0.0)) continue;
     if (m_changes[k] >= maxChangesPerNode) {
       if (unsettled) ++*unsettled;
+      // The tension or penetration over its tolerance (∞ for a zero tolerance).
+      const double tolerance = m_active[k] ? pressureTolerance : penetrationTolerance;
+      const double ratio = tolerance > 0.0 ? (violation + tolerance) / tolerance : std::numeric_limits<double>::infinity();
+      if (unsettledRatio) *unsettledRatio = std::max(*unsettledRatio, ratio);
       continue;
     }
     const int a = previous(k), b = next(k);

@@ -31,10 +31,12 @@ ContactStatusLoop::Decision ContactStatusLoop::decide(const std::vector<ContactW
   Decision d;
   for (size_t w = 0; w < walls.size(); ++w) {
     int stuck = 0;
-    double second = 0.0;
+    double second = 0.0, ratio = 0.0;
     const StatusChange c = walls[w].nextChange(values[w].p, values[w].u, m_pressureTolerance + pressureShift,
-                                               m_penetrationTolerance + penetrationShift, m_maxPerNode, &stuck, &second);
+                                               m_penetrationTolerance + penetrationShift, m_maxPerNode, &stuck, &second,
+                                               &ratio);
     d.unsettled += stuck;
+    d.unsettledRatio = std::max(d.unsettledRatio, ratio);
     if (c.node < 0) continue;
     if (c.violation > d.change.violation) {
       d.runnerUp = std::max({d.runnerUp, d.change.violation, second});
@@ -147,11 +149,13 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
       continue;
     }
     report.unsettledContacts = 0;
+    report.unsettledContactRatio = 0.0;
     if (d.wall < 0) {
       if (d.unsettled > 0 && m_tolerateCycling) {
         report.unsettledContacts = d.unsettled;
-        log() << "contact: " << d.unsettled << " node(s) cycle between active and free; left as they are while "
-              << "the free surfaces move\n";
+        report.unsettledContactRatio = d.unsettledRatio;
+        log() << "contact: " << d.unsettled << " node(s) cycle between active and free (violation up to "
+              << d.unsettledRatio << " x its tolerance); left as they are while the free surfaces move\n";
       } else if (d.unsettled > 0) {
         report.converged = false;
         report.message = std::to_string(d.unsettled) + " contact node(s) cycle between active and free (each changed " +

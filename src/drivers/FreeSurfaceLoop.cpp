@@ -39,7 +39,8 @@ void FreeSurfaceReport::report(nlohmann::json& summary) const {
                              {"newton_iterations", newtonIterations}, {"contact_changes", contactChanges},
                              {"flow_angle", flowAngle},     {"move", move},
                              {"seconds", seconds},          {"motion_seconds", motionSeconds},
-                             {"resolve_seconds", resolveSeconds}, {"history", history}};
+                             {"resolve_seconds", resolveSeconds}, {"grazing_contacts", grazingContacts},
+                             {"history", history}};
   if (!message.empty()) summary["free_surface"]["message"] = message;
 }
 
@@ -102,7 +103,9 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     }
     report.flowAngle = step.maxFlowAngle;
     report.move = step.maxMove;
-    const int unsettled = hooks.unsettledContacts ? hooks.unsettledContacts() : 0;
+    const auto [unsettled, unsettledRatio] = hooks.unsettledContacts ? hooks.unsettledContacts()
+                                                                       : std::pair<int, double>{0, 0.0};
+    const bool settled = unsettled == 0 || unsettledRatio <= kGrazing;
     log() << "flowform: free surface " << report.iterations << ": max |u.n|/|u| = " << step.maxFlowAngle << " at ("
           << step.worstSegment[0] << ", " << step.worstSegment[1] << ")"
           << ", next move " << step.maxMove << " at (" << step.largestMoveAt[0] << ", " << step.largestMoveAt[1] << ")" << (step.clampedToTool ? ", " + std::to_string(step.clampedToTool) +
@@ -110,10 +113,12 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
                                                                    : std::string())
           << (step.released.empty() ? std::string()
                                     : ", " + std::to_string(step.released.size()) + " contact node(s) not reached")
-          << (unsettled ? ", " + std::to_string(unsettled) + " contact node(s) cycling" : std::string())
+          << (unsettled ? ", " + std::to_string(unsettled) + " contact node(s) cycling (" +
+                              std::to_string(unsettledRatio) + " x tolerance)" : std::string())
           << "\n";
-    if (step.maxFlowAngle <= angleLimit && step.maxMove <= moveLimit && step.released.empty() && unsettled == 0) {
+    if (step.maxFlowAngle <= angleLimit && step.maxMove <= moveLimit && step.released.empty() && settled) {
       report.converged = true;
+      report.grazingContacts = unsettled;
       break;
     }
     if (report.iterations >= maxIterations) {

@@ -131,7 +131,8 @@ const SolveReport& Simulation::run() {
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged && !m_freeSurfaces->empty()) {
-    m_freeSurfaceReport = convergeFreeSurfaces(solver, *m_solution, m_physics, m_report.unsettledContacts);
+    m_freeSurfaceReport = convergeFreeSurfaces(solver, *m_solution, m_physics,
+                                               {m_report.unsettledContacts, m_report.unsettledContactRatio});
     m_report.newtonIterations += m_freeSurfaceReport.newtonIterations;
     m_contactChanges += m_freeSurfaceReport.contactChanges;
     if (!m_freeSurfaceReport.converged) {
@@ -190,10 +191,10 @@ void Simulation::startFrom(const Simulation& other, bool decideZoneLimits) {
 }
 
 FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
-                                                   int unsettledAtStart,
+                                                   std::pair<int, double> unsettledAtStart,
                                                    double toleranceScale) {
   FreeSurfaceLoop::Hooks hooks;
-  int unsettled = unsettledAtStart;  // contact nodes the last solve left cycling
+  std::pair<int, double> unsettled = unsettledAtStart;  // contact nodes the last solve left cycling
   hooks.velocities = [&] { return replicate(x, *m_dofMap); };
   hooks.moveNodes = [&](const std::vector<std::array<double, 2>>& coords) {
     moveNodes(coords);
@@ -222,7 +223,7 @@ FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vect
     if (r.converged && !m_walls.empty()) changes = m_statusLoop->run(solver, x, physics, m_walls, r);
     newton = r.newtonIterations;
     why = r.message;
-    unsettled = r.unsettledContacts;
+    unsettled = {r.unsettledContacts, r.unsettledContactRatio};
     return r.converged;
   };
   hooks.unsettledContacts = [&] { return unsettled; };
@@ -299,7 +300,8 @@ PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double de
     const std::vector<std::array<double, 2>> shape = m_mesh.coords;
     Vector moving(*x, Teuchos::Copy);
     const FreeSurfaceReport surfaces =
-        convergeFreeSurfaces(solver, moving, physics, report.unsettledContacts, kFiniteDifferenceSurfaceTolerance);
+        convergeFreeSurfaces(solver, moving, physics, {report.unsettledContacts, report.unsettledContactRatio},
+                             kFiniteDifferenceSurfaceTolerance);
     run.newtonIterations += surfaces.newtonIterations;
     if (surfaces.converged) {
       run.movingFunctionals = m_responses->evaluate(moving, m_mesh, *m_dofMap, *m_assembler, m_walls);

@@ -7,3 +7,10 @@ add_test(NAME free_surface_checks
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/free_surface_checks.py
                  $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/free_surface)
 set_tests_properties(free_surface_checks PROPERTIES LABELS "regression")
+
+# Orthogonal cutting with a free chip (docs/cutting.md): balances, Coulomb's F_t/F_c, the
+# chip's dependence on its start at ν = 0, derivatives through the converged chip, bad input.
+add_test(NAME cutting_checks
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/cutting_checks.py
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/cutting)
+set_tests_properties(cutting_checks PROPERTIES LABELS "regression")

@@ -121,10 +121,11 @@ class ContactWall {
     if (m_settings.closedCorners) m_active[k] = 1;
   }
   /// Whether node k is held active (no status change): at a closed convex corner, or, on a wall
-  /// whose released nodes are a free surface, its upstream end (shared with the Start Group: the
-  /// fixed start of the surface, e.g. a cutting tool's tip, where the workpiece divides).
+  /// whose released nodes are a free surface, its upstream end when no other wall meets it there
+  /// (the fixed start of the surface where the material divides: a cutting tool's tip; at a tool
+  /// corner such as a die lip the corner rules decide).
   bool held(int k) const {
-    return (m_settings.closedCorners && !m_cornerNormals[k].empty()) || k == m_upstreamEnd;
+    return (m_settings.closedCorners && !m_cornerNormals[k].empty()) || (k == m_upstreamEnd && m_cornerNormals[k].empty());
   }
 
   /// What solving changes on a wall: the statuses and their change counts, ν and m, and the
@@ -205,10 +206,12 @@ class ContactWall {
   /// already changed `maxChangesPerNode` times is not changed again (it would cycle);
   /// `unsettled` returns how many such nodes still violate their criterion.
   /// `runnerUp` (optional) returns the second largest violation of the class the change was
-  /// taken from (0 when there is none).
+  /// taken from (0 when there is none). `unsettledRatio` (optional) returns the largest tension or
+  /// penetration of the unsettled nodes over its tolerance.
   StatusChange nextChange(const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
                           double pressureTolerance, double penetrationTolerance, int maxChangesPerNode,
-                          int* unsettled = nullptr, double* runnerUp = nullptr) const;
+                          int* unsettled = nullptr, double* runnerUp = nullptr,
+                          double* unsettledRatio = nullptr) const;
 
  private:
   /// P_k, S_k and A_k of node k, each only when the law needs it (FrictionLaw.hpp).

@@ -44,6 +44,7 @@ class ContactStatusLoop {
     StatusChange change;
     double runnerUp = 0.0;
     int unsettled = 0;
+    double unsettledRatio = 0.0;  ///< their largest violation over its tolerance
   };
   /// p and u at every node of one wall (replicated on every rank: wallValues).
   struct WallValues {

@@ -127,7 +127,7 @@ class Simulation {
   /// the re-solves use `solver`.
   /// `unsettledAtStart`: contact nodes the solve before it left cycling (SolveReport::unsettledContacts).
   FreeSurfaceReport convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
-                                         int unsettledAtStart, double toleranceScale = 1.0);
+                                         std::pair<int, double> unsettledAtStart, double toleranceScale = 1.0);
   /// The free-surface tolerances of a finite-difference run relative to the case's.
   static constexpr double kFiniteDifferenceSurfaceTolerance = 1e-4;
   /// DDM sensitivities at the converged solution and, when asked, their FD check.

@@ -67,6 +67,7 @@ struct SolveReport {
   /// Contact nodes left cycling between active and free by a status loop that tolerates them
   /// (ContactStatusLoop::tolerateCycling: while free surfaces move); 0 otherwise.
   int unsettledContacts = 0;
+  double unsettledContactRatio = 0.0;  ///< their largest tension or penetration over its tolerance
   /// converged, linear_problem, newton_iterations, continuation_stages, residual_norm,
   /// stages, message and "solves" (newton_iterations per solve, restarts) into the summary.
   void report(nlohmann::json& summary) const;

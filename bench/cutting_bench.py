@@ -1,0 +1,105 @@
+#!/usr/bin/python3
+"""The cutting scene's cost against its accuracy (docs/cutting.md §6, docs/BENCHMARKS.md §13):
+the default case (xml/cutting.xml: ν = 0.2, h = 0.1, hc = h/4) and refinements of it; per mesh
+the dofs, the surface updates, the Newton iterations, the run time (median of --repeat), the
+cutting force F_c, the drive force, the chip ratio t/t_c, and their error estimates.
+
+usage: bench/cutting_bench.py [FLOWFORM] [--h 0.1,0.07,0.05] [--repeat 1] [--workdir DIR]
+                              [--sets PATH=VALUE ...]
+
+The error estimate of a value on mesh i is its distance to the Richardson extrapolation of the
+three finest meshes, v_inf = v_3 + (v_3 - v_2) / ((h_2/h_3)^p - 1) with the observed order p
+(from the three values, clamped to [0.5, 2]; p = 1 when the differences change sign, and then
+the estimate is flagged: the values do not yet converge monotonically).
+"""
+import argparse
+import math
+import os
+import statistics
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from flowform_tools import launcher, machine, summary, sweep  # noqa: E402
+
+NO_FILES = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
+VALUES = ("cutting_force", "drive_force", "chip_ratio")
+
+
+def extrapolate(hs, vs):
+    """(v_inf, p, monotone) from the last three (h, v)."""
+    (h1, h2, h3), (v1, v2, v3) = hs[-3:], vs[-3:]
+    d1, d2 = v2 - v1, v3 - v2
+    monotone = d1 * d2 > 0 and abs(d2) < abs(d1)
+    r1, r2 = h1 / h2, h2 / h3
+    p = 1.0
+    if monotone:
+        # |d1|/|d2| = (h1^p - h2^p)/(h2^p - h3^p): solved by bisection on p in [0.5, 2].
+        target = abs(d1) / abs(d2)
+        lo, hi = 0.5, 2.0
+        ratio = lambda q: (h1 ** q - h2 ** q) / (h2 ** q - h3 ** q)  # noqa: E731
+        if ratio(lo) >= target:
+            p = lo
+        elif ratio(hi) <= target:
+            p = hi
+        else:
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if ratio(mid) < target else (lo, mid)
+            p = 0.5 * (lo + hi)
+    return v3 + d2 / (r2 ** p - 1.0), p, monotone
+
+
+def main():
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    ap = argparse.ArgumentParser()
+    ap.add_argument("flowform", nargs="?", default=os.path.join(root, "build/flowform"))
+    ap.add_argument("--h", type=sweep.parse_values, default=[0.1, 0.07, 0.05])
+    ap.add_argument("--repeat", type=int, default=1)
+    ap.add_argument("--workdir", default="/tmp/flowform_cutting_bench")
+    ap.add_argument("--sets", nargs="*", default=[])
+    a = ap.parse_args()
+    info = machine.machine_info()
+    print(f"# {info.get('date')}, commit {info.get('commit')}, {info.get('Model name')} x {info.get('CPU(s)')}, "
+          f"load {machine.load():.2f}")
+    rows = []
+    for h in a.h:
+        times, s, status = [], {}, None
+        for _ in range(a.repeat):
+            out = os.path.join(a.workdir, f"h{h:g}")
+            start = time.monotonic()
+            run = launcher.run(a.flowform, os.path.join(root, "xml/cutting.xml"), out,
+                               NO_FILES + [f"Mesh/Geo Parameters/h={h}"] + list(a.sets), quiet=True, clean=True)
+            times.append(time.monotonic() - start)
+            status, s = run.status, summary.load(out) or {}
+        rows.append({"h": h, "exit": status, "seconds": statistics.median(times), "dofs": s.get("dofs"),
+                     "updates": s.get("free_surface_iterations"), "newton": s.get("newton_iterations"),
+                     "values": s.get("functionals") or {}})
+    ok = [r for r in rows if r["exit"] == 0]
+    limits = {}
+    if len(ok) >= 3:
+        for name in VALUES:
+            limits[name] = extrapolate([r["h"] for r in ok], [r["values"][name] for r in ok])
+    print("| h | exit | dofs | updates | Newton | s | " + " | ".join(f"{n} | est. error" for n in VALUES) + " |")
+    print("|---:|---:|---:|---:|---:|---:|" + "---:|---:|" * len(VALUES))
+    for r in rows:
+        cells = []
+        for name in VALUES:
+            v = r["values"].get(name)
+            if v is None:
+                cells += ["-", "-"]
+                continue
+            est = "-"
+            if name in limits:
+                vinf, p, monotone = limits[name]
+                est = f"{abs(v - vinf) / abs(vinf) * 100:.2f} %" + ("" if monotone else " (not monotone)")
+            cells += [f"{v:.5f}", est]
+        print(f"| {r['h']:g} | {r['exit']} | {r['dofs']} | {r['updates']} | {r['newton']} | {r['seconds']:.1f} | "
+              + " | ".join(cells) + " |")
+    for name, (vinf, p, monotone) in limits.items():
+        print(f"# {name}: extrapolated {vinf:.5f}, observed order {p:.2f}{'' if monotone else ' (not monotone: p = 1 assumed)'}")
+    return 0 if all(r["exit"] == 0 for r in rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
