@@ -342,14 +342,16 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
                     stabilization, dead);
       if (r.type == "Dead Zone") values[r.name] = sumOverRanks(comm, dead);
       else values[r.name] = sumOverRanks(comm, r.type == "Plastic Power" ? plastic : stabilization);
-    } else if (r.type == "Wall Force") {
-      // The force the material exerts on a contact wall: Σ over its nodes of the wall's part of the
-      // momentum residual (normal penalty and friction), R_k = ∫ (α_n (u·n) n + g t) N_k dΓ: the
-      // cutting (X) and thrust (Y) forces on a tool. By the balance of the whole body it equals the
-      // sum of the Boundary Forces on the velocity-driven groups when the rest is traction-free.
+    } else if (r.type == "Wall Force" || r.type == "Friction Power" || r.type == "Penalty Power") {
+      // Node by node over the walls (each node by its owner), from the wall's part of the momentum
+      // residual R_k = α_n (u·n) n + g t (normal penalty and friction):
+      //   Wall Force: Σ R_k on the named wall, the force the material exerts on it (a tool's
+      //     cutting (X) and thrust (Y) forces; by the balance of the whole body, the sum of the
+      //     Boundary Forces on the velocity-driven groups when the rest is traction-free);
+      //   Friction Power: Σ g_k u_t,k;  Penalty Power: Σ (normal part of R_k)·u = α_n (u·n)².
       for (size_t w = 0; w < walls.size(); ++w) {
         const ContactWall& wall = walls[w];
-        if (wall.name() != r.boundary) continue;
+        if (r.type == "Wall Force" && wall.name() != r.boundary) continue;
         const FrictionParameters<Scalar> fp = frictionFor<Scalar>(wall, static_cast<int>(w), h);
         for (int k = 0; k < wall.numNodes(); ++k) {
           const LO n = dofMap.overlapIndex(wall.curve().nodes[k]);
@@ -361,33 +363,14 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
           const Scalar p[3] = {pressure(wall.previous(k)), at(x, dofMap.dof(n, kP)), pressure(wall.next(k))};
           Scalar Rk[2] = {0.0, 0.0};
           wall.addNodeResidual(k, fp, u, p, Rk);
-          local += r.component == "X" ? Rk[0] : Rk[1];
-        }
-      }
-      values[r.name] = sumOverRanks(comm, local);
-    } else if (r.type == "Friction Power" || r.type == "Penalty Power") {
-      for (size_t w = 0; w < walls.size(); ++w) {
-        const ContactWall& wall = walls[w];
-        const FrictionParameters<Scalar> fp = frictionFor<Scalar>(wall, static_cast<int>(w), h);
-        for (int k = 0; k < wall.numNodes(); ++k) {
-          const LO n = dofMap.overlapIndex(wall.curve().nodes[k]);
-          if (n < 0 || n >= dofMap.numOwnedNodes()) continue;
-          auto pressure = [&](int j) {
-            return j < 0 ? Scalar(0.0) : at(x, dofMap.dof(dofMap.overlapIndex(wall.curve().nodes[j]), kP));
-          };
-          const Scalar u[2] = {at(x, dofMap.dof(n, kUx)), at(x, dofMap.dof(n, kUy))};
-          const Scalar p[3] = {pressure(wall.previous(k)), at(x, dofMap.dof(n, kP)), pressure(wall.next(k))};
+          if (r.type == "Wall Force") {
+            local += r.component == "X" ? Rk[0] : Rk[1];
+            continue;
+          }
           const auto& nk = wall.curve().normals[k];
           const Scalar g = wall.tangentialForce(k, fp, u, p);
-          if (r.type == "Friction Power") {
-            const Scalar ut = -nk[1] * u[0] + nk[0] * u[1];
-            local += g * ut;
-          } else {
-            // The normal part of the node's contact residual, dotted with u: α_n (u·n)².
-            Scalar Rn[2] = {0.0, 0.0};
-            wall.addNodeResidual(k, fp, u, p, Rn);
-            local += (Rn[0] + g * nk[1]) * u[0] + (Rn[1] - g * nk[0]) * u[1];
-          }
+          if (r.type == "Friction Power") local += g * (-nk[1] * u[0] + nk[0] * u[1]);
+          else local += (Rk[0] + g * nk[1]) * u[0] + (Rk[1] - g * nk[0]) * u[1];
         }
       }
       values[r.name] = sumOverRanks(comm, local);
