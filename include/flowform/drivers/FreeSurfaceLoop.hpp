@@ -71,6 +71,10 @@ class FreeSurfaceLoop {
         newtonMoves;
   };
 
+  /// A contact node left cycling whose tension or penetration is within this many times the
+  /// status tolerances only grazes the tool: a converged state may keep it (Hooks::unsettledContacts).
+  static constexpr double kGrazing = 30.0;
+
   /// `settings` is the validated "Free Surface" sublist.
   FreeSurfaceLoop(const FreeSurfaces& surfaces, const Teuchos::ParameterList& settings);
 
@@ -83,7 +87,6 @@ class FreeSurfaceLoop {
  private:
   static constexpr double kMinRelaxation = 0.1, kMaxRelaxation = 1.5;  ///< Aitken's ω kept in here
   static constexpr int kMaxHalvings = 6;  ///< of a move that would invert a cell
-  static constexpr double kGrazing = 30.0;  ///< see Hooks::unsettledContacts
   const FreeSurfaces& m_surfaces;
   int m_maxIterations;
   double m_angleTolerance, m_moveTolerance;
