@@ -6,7 +6,7 @@ total, through the converged free surfaces) against central finite differences (
 with the surfaces re-converged); the cost of each run.
 
 usage: bench/cutting_sweep.py [FLOWFORM] [--nu 0,0.1,0.2,0.3,0.5] [--h 0.1] [--workdir DIR]
-                              [--sets PATH=VALUE ...] [--plot DIR]
+                              [--sets PATH=VALUE ...] [--plot DIR] [--reuse]
 
 Writes DIR/sweep.json and prints a markdown table (docs/cutting.md §5). --plot DIR draws
 cutting_sweep.png there: t/t_c and F_c/(k t) against ν with the Lee-Shaffer and Merchant curves,
@@ -63,20 +63,25 @@ def derivative(s, name):
             "fd_moving": fd.get("fd_moving_shape"), "one_sided": fd.get("one_sided")}
 
 
-def run_one(flowform, case, workdir, nu, h, extra):
+def run_one(flowform, case, workdir, nu, h, extra, reuse=False):
     out = os.path.join(workdir, sweep.label(nu))
+    previous = summary.load(out) if reuse else None
     sets = [f"Boundary Conditions/rake/Friction Coefficient={nu}", f"Mesh/Geo Parameters/h={h}",
             "Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true",
             "Sensitivity/Finite Difference Step=2e-4"] + list(extra)
-    start = time.monotonic()
-    run = launcher.run(flowform, case, out, sets, quiet=True, clean=True)
-    seconds = time.monotonic() - start
-    s = summary.load(out) or {}
+    if previous and previous.get("exit_status") == 0:
+        s, status = previous, 0  # --reuse: a converged run of an earlier sweep
+        seconds = (s.get("timings") or {}).get("total", 0.0)
+    else:
+        start = time.monotonic()
+        status = launcher.run(flowform, case, out, sets, quiet=True, clean=True).status
+        seconds = time.monotonic() - start
+        s = summary.load(out) or {}
     f = s.get("functionals") or {}
-    row = {"nu": nu, "exit": run.status, "seconds": seconds, "dir": out,
+    row = {"nu": nu, "exit": status, "seconds": seconds, "dir": out,
            "updates": s.get("free_surface_iterations"), "newton": s.get("newton_iterations"),
            "timings": s.get("timings"), "functionals": f}
-    if run.status == 0:
+    if status == 0:
         dissipation = sum(f[k] for k in ("plastic_power", "friction_power", "penalty_power", "stabilization_power"))
         row["power_residual"] = (f["drive_power"] - dissipation) / f["drive_power"]
         k = f["plastic_power"] / strain_rate_integral(out) / math.sqrt(3.0)
@@ -170,11 +175,14 @@ def main():
     ap.add_argument("--workdir", default="/tmp/flowform_cutting_sweep")
     ap.add_argument("--sets", nargs="*", default=[])
     ap.add_argument("--plot", default=None)
+    ap.add_argument("--reuse", action="store_true",
+                    help="keep the converged runs already in --workdir (their time is flowform's own total)")
     a = ap.parse_args()
     info = machine.machine_info()
     print(f"# {info.get('date')}, commit {info.get('commit')}, {info.get('Model name')} x {info.get('CPU(s)')}, "
           f"load {machine.load():.2f}, h = {a.h}")
-    rows = [run_one(a.flowform, os.path.join(root, "xml/cutting.xml"), a.workdir, nu, a.h, a.sets) for nu in a.nu]
+    rows = [run_one(a.flowform, os.path.join(root, "xml/cutting.xml"), a.workdir, nu, a.h, a.sets, a.reuse)
+            for nu in a.nu]
     os.makedirs(a.workdir, exist_ok=True)
     with open(os.path.join(a.workdir, "sweep.json"), "w") as f:
         json.dump(rows, f, indent=1)
