@@ -10,12 +10,16 @@
 // - the arc-length update at a uniform velocity makes the surface the straight line along u with
 //   its segment lengths kept in one step, and the group at its end follows the end's move in
 //   proportion to its arc length;
+// - a group dragged by two surfaces' ends (a chip's outlet) moves each of its nodes by the sum of
+//   the two drags, and each end keeps its own move (each end is in the other's drag list, with
+//   fraction 0);
 // - a Start Group that shares no end of the surface is an input error naming it;
 // - the loop halves a move that would invert a cell and goes on.
 // Round-off bounds: 1e-12 (direct solve of a 100-node system, coordinates of order 1).
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
 #include <cmath>
+#include <limits>
 
 #include "StructuredMesh.hpp"
 #include "flowform/core/InputError.hpp"
@@ -147,6 +151,26 @@ TEUCHOS_UNIT_TEST(FreeSurface, ArcLengthUpdateTurnsWithUniformFlow) {
       TEST_FLOATING_EQUALITY(step.displacement[n][1] + 1.0, f * step.displacement[end][1] + 1.0, 1e-12);
     }
   TEST_ASSERT(streamlineAfter(surfaces, c, step));
+}
+
+TEUCHOS_UNIT_TEST(FreeSurface, TwoEndsDragOneGroupAndKeepTheirMoves) {
+  // Nodes 0 and 1 end two surfaces; node 2 lies on the group between them at a quarter of its
+  // length from node 0. Surface 0's drags (its end: move 0) list node 2 (fraction 3/4) and node 1
+  // (fraction 0); surface 1's list node 2 (1/4) and node 0 (0).
+  FreeSurfaceStep step;
+  step.displacement.assign(3, {0.0, 0.0});
+  step.prescribed.assign(3, 0);
+  step.moves.push_back({0, {0.0, 1.0}, {0.3, -0.1}, std::numeric_limits<double>::infinity(), true, true});
+  step.moves.push_back({1, {0.0, 1.0}, {-0.2, 0.4}, std::numeric_limits<double>::infinity(), true, true});
+  step.drags = {{2, 0.75, 0}, {1, 0.0, 0}, {2, 0.25, 1}, {0, 0.0, 1}};
+  step.relax(1.0);
+  TEST_FLOATING_EQUALITY(step.displacement[0][0], 0.3, 1e-14);
+  TEST_FLOATING_EQUALITY(step.displacement[0][1], -0.1, 1e-14);
+  TEST_FLOATING_EQUALITY(step.displacement[1][0], -0.2, 1e-14);
+  TEST_FLOATING_EQUALITY(step.displacement[1][1], 0.4, 1e-14);
+  TEST_FLOATING_EQUALITY(step.displacement[2][0], 0.75 * 0.3 + 0.25 * -0.2, 1e-14);
+  TEST_FLOATING_EQUALITY(step.displacement[2][1], 0.75 * -0.1 + 0.25 * 0.4, 1e-14);
+  TEST_ASSERT(step.prescribed[0] && step.prescribed[1] && step.prescribed[2]);
 }
 
 TEUCHOS_UNIT_TEST(FreeSurface, StartGroupMustShareAnEnd) {
