@@ -35,16 +35,11 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import launcher, summary  # noqa: E402
+from flowform_tools import checks, launcher, summary  # noqa: E402
 
 NO_FILES = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
 SENSITIVITY = ["Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true",
                "Sensitivity/Finite Difference Step=2e-4"]
-
-
-def check(ok, text):
-    print(f"{'ok  ' if ok else 'FAIL'} {text}")
-    return 0 if ok else 1
 
 
 def solve(flowform, case, out, sets):
@@ -57,8 +52,8 @@ def balances(f, label):
     dissipation = f["plastic_power"] + f["friction_power"] + f["penalty_power"] + f["stabilization_power"]
     power = (f["drive_power"] - dissipation) / f["drive_power"]
     force = (f["cutting_force"] - f["chip_outlet_force"] - f["drive_force"]) / f["drive_force"]
-    failed += check(abs(f["chip_flux"] - 1.0) <= 5e-3, f"{label} mass: chip flux {f['chip_flux']:.6f} (t = 1)")
-    failed += check(abs(power) <= 1e-8 and abs(force) <= 1e-8,
+    failed += checks.check(abs(f["chip_flux"] - 1.0) <= 5e-3, f"{label} mass: chip flux {f['chip_flux']:.6f} (t = 1)")
+    failed += checks.check(abs(power) <= 1e-8 and abs(force) <= 1e-8,
                     f"{label} balances: power {power:.1e}, force {force:.1e} (relative)")
     return failed
 
@@ -76,21 +71,21 @@ def main():
     status, s = solve(flowform, case, run1, SENSITIVITY)
     f = s.get("functionals") or {}
     updates = s.get("free_surface_iterations")
-    failed += check(status == 0 and updates is not None and updates <= 80,
+    failed += checks.check(status == 0 and updates is not None and updates <= 80,
                     f"ν = 0.2: exit {status}, {updates} surface updates")
     if status == 0:
         failed += balances(f, "ν = 0.2")
         ratio = f["thrust_force"] / f["cutting_force"]
-        failed += check(0.9 * 0.2 <= ratio <= 0.2 + 1e-12, f"ν = 0.2: F_t/F_c = {ratio:.5f} (ν = 0.2, sticking at the tip)")
+        failed += checks.check(0.9 * 0.2 <= ratio <= 0.2 + 1e-12, f"ν = 0.2: F_t/F_c = {ratio:.5f} (ν = 0.2, sticking at the tip)")
         phi = math.degrees(math.atan(f["chip_ratio"]))
-        failed += check(abs(phi - f["shear_angle"]) <= 1e-10,
+        failed += checks.check(abs(phi - f["shear_angle"]) <= 1e-10,
                         f"ν = 0.2: shear angle {f['shear_angle']:.4f} = atan(t/t_c = {f['chip_ratio']:.4f})")
         c, F = fd_entry(s, "chip_ratio"), fd_entry(s, "cutting_force")
         ct, cf = c.get("ddm_total_shape"), c.get("fd_moving_shape")
-        failed += check(ct is not None and cf is not None and ct < 0.0 and abs(ct - cf) <= 0.01 * abs(cf),
+        failed += checks.check(ct is not None and cf is not None and ct < 0.0 and abs(ct - cf) <= 0.01 * abs(cf),
                         f"d(t/t_c)/dν total: DDM {ct}, FD re-converged {cf}")
         Ft, Ff = F.get("ddm_total_shape"), F.get("fd_moving_shape")
-        failed += check(Ft is not None and Ff is not None and abs(Ft - Ff) <= 0.01 * abs(Ff)
+        failed += checks.check(Ft is not None and Ff is not None and abs(Ft - Ff) <= 0.01 * abs(Ff)
                         and F.get("rel_diff", 1.0) <= 1e-5,
                         f"dF_c/dν total: DDM {Ft}, FD re-converged {Ff}; frozen: DDM {F.get('ddm')}, FD {F.get('fd')}")
 
@@ -100,15 +95,15 @@ def main():
                           NO_FILES + ["Boundary Conditions/rake/Friction Coefficient=0", f"Mesh/Geo Parameters/tc={tc}",
                                       "Free Surface/Maximum Iterations=150"])
         f = s.get("functionals") or {}
-        failed += check(status == 0, f"ν = 0, start t_c = {tc}: exit {status}, {s.get('free_surface_iterations')} updates")
+        failed += checks.check(status == 0, f"ν = 0, start t_c = {tc}: exit {status}, {s.get('free_surface_iterations')} updates")
         if status != 0:
             continue
         ratios[tc] = f["chip_ratio"]
-        failed += check(abs(f["thrust_force"]) <= 1e-10 * f["cutting_force"],
+        failed += checks.check(abs(f["thrust_force"]) <= 1e-10 * f["cutting_force"],
                         f"ν = 0, start {tc}: F_t = {f['thrust_force']:.2e}, F_c = {f['cutting_force']:.4f}")
         failed += balances(f, f"ν = 0, start {tc}")
     if len(ratios) == 2:
-        failed += check(abs(ratios["1.0"] - ratios["1.4"]) <= 0.03 and max(ratios.values()) < 1.0,
+        failed += checks.check(abs(ratios["1.0"] - ratios["1.4"]) <= 0.03 and max(ratios.values()) < 1.0,
                         f"ν = 0: chip ratio {ratios['1.0']:.4f} (start 1.0), {ratios['1.4']:.4f} (start 1.4)")
 
     for name, sets in (("contact_length_not_a_wall", ["Responses/l/Type=Contact Length", "Responses/l/Boundary=far"]),
@@ -116,17 +111,16 @@ def main():
                        ("reference_thickness", ["Responses/chip_ratio/Reference Thickness=0"])):
         out = os.path.join(work, f"bad_{name}")
         run = launcher.run(flowform, case, out, sets, quiet=True, clean=True)
-        failed += check(run.status == 2 and not os.path.exists(out), f"bad input {name}: exit {run.status}")
+        failed += checks.check(run.status == 2 and not os.path.exists(out), f"bad input {name}: exit {run.status}")
 
     plots = os.path.join(work, "plots")
     run = launcher.run_command([sys.executable, os.path.join(source, "scripts/plot_cutting.py"), run1, "--out", plots],
                                capture=True)
     made = [os.path.join(plots, f) for f in ("cutting_mesh.png", "cutting_fields.png", "cutting_sensitivity.png")]
-    failed += check(run.status == 0 and all(os.path.isfile(p) and os.path.getsize(p) > 10000 for p in made),
+    failed += checks.check(run.status == 0 and checks.pictures_drawn(made),
                     f"plot_cutting.py: exit {run.status}, {made}")
 
-    print("FAILED" if failed else "PASSED")
-    return 1 if failed else 0
+    return checks.verdict(failed)
 
 
 if __name__ == "__main__":

@@ -38,7 +38,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import launcher, summary  # noqa: E402
+from flowform_tools import checks, launcher, summary  # noqa: E402
 
 # (scene, nu) -> (F_ref, dF/dnu_ref or None): docs/BENCHMARKS.md §10.
 REFERENCE = {("xml/extrusion.xml", "0.0"): (3.30663, 4.4505), ("xml/extrusion.xml", "0.1"): (3.73469, None),
@@ -49,11 +49,6 @@ WALLS = ("container", "die_face", "die_land")
 
 def friction(nu):
     return [f"Boundary Conditions/{w}/Friction Coefficient={nu}" for w in WALLS]
-
-
-def check(ok, text):
-    print(f"{'ok  ' if ok else 'FAIL'} {text}")
-    return 0 if ok else 1
 
 
 def main():
@@ -70,7 +65,7 @@ def main():
         s = summary.load(out) or {}
         force = (s.get("functionals") or {}).get("top_force")
         eta = (s.get("functionals_error_estimate") or {}).get("top_force")
-        failed += check(run.status == 0 and force is not None and abs(force + 4.0) <= 1e-10 and eta is not None
+        failed += checks.check(run.status == 0 and force is not None and abs(force + 4.0) <= 1e-10 and eta is not None
                         and abs(eta) <= 1e-8, f"channel n = {n}: exit {run.status}, F = {force}, estimate {eta}")
 
     for n, exact in (("1.0", 2.0), ("3.0", 3.6)):
@@ -83,7 +78,7 @@ def main():
         q = (s.get("functionals") or {}).get("Q")
         eta = (s.get("functionals_error_estimate") or {}).get("Q")
         eff = eta / (exact - q) if q is not None and eta is not None else None
-        failed += check(run.status == 0 and eff is not None and 0.5 <= eff <= 2.0,
+        failed += checks.check(run.status == 0 and eff is not None and 0.5 <= eff <= 2.0,
                         f"channel flow rate n = {n}: Q = {q} (exact {exact}), estimate {eta}, effectivity {eff}")
 
     for (case, nu), (ref, dref) in REFERENCE.items():
@@ -96,14 +91,14 @@ def main():
         force = (s.get("functionals") or {}).get("ram_force")
         eta = (s.get("functionals_error_estimate") or {}).get("ram_force")
         eff = eta / (ref - force) if force is not None and eta is not None else None
-        failed += check(run.status == 0 and eff is not None and 0.5 <= eff <= 2.0,
+        failed += checks.check(run.status == 0 and eff is not None and 0.5 <= eff <= 2.0,
                         f"{case} nu = {nu}: F = {force}, estimate {eta}, true {ref - (force or 0):.4g}, "
                         f"effectivity {eff}")
         if dref is not None:
             d = ((s.get("sensitivities") or {}).get("ram_force") or {}).get("Friction Coefficient")
             deta = ((s.get("sensitivities_error_estimate") or {}).get("ram_force") or {}).get("Friction Coefficient")
             deff = deta / (dref - d) if d is not None and deta is not None else None
-            failed += check(deff is not None and 0.5 <= deff <= 2.0,
+            failed += checks.check(deff is not None and 0.5 <= deff <= 2.0,
                             f"{case} nu = {nu}: dF/dnu = {d}, estimate {deta}, true {dref - (d or 0):.4g}, "
                             f"effectivity {deff}")
 
@@ -118,7 +113,7 @@ def main():
     eta = (s.get("functionals_error_estimate") or {}).get("ram_force")
     ref = REFERENCE[("xml/extrusion.xml", "0.1")][0]
     eff = eta / (ref - force) if force is not None and eta is not None else None
-    failed += check(run.status == 0 and eff is not None and 0.5 <= eff <= 2.0,
+    failed += checks.check(run.status == 0 and eff is not None and 0.5 <= eff <= 2.0,
                     f"extrusion on quadrilaterals: F = {force}, estimate {eta}, true {ref - (force or 0):.4g}, "
                     f"effectivity {eff}")
 
@@ -132,14 +127,14 @@ def main():
     ref = REFERENCE[("xml/extrusion.xml", "0.1")][0]
     ok = run.status == 0 and len(cycles) >= 2 and s["adaptivity"]["target_met"] and force is not None and \
         eta is not None and abs(eta) <= 0.005 * abs(force) and abs(ref - force) <= 2 * 0.005 * ref
-    failed += check(ok, f"adaptive: exit {run.status}, {len(cycles)} cycles, dofs "
+    failed += checks.check(ok, f"adaptive: exit {run.status}, {len(cycles)} cycles, dofs "
                         f"{[c.get('dofs') for c in cycles]}, F = {force}, estimate {eta}")
     # The sensitivities of the last cycle, with their estimate, and one FD check (two runs), not
     # one per cycle; DDM against FD as in the sensitivity tests (central differences, 1e-4).
     fd = ((s.get("fd_check") or {}).get("ram_force") or {}).get("Friction Coefficient") or {}
     runs = ((s.get("sensitivity") or {}).get("finite_difference") or {}).get("runs")
     deta = ((s.get("sensitivities_error_estimate") or {}).get("ram_force") or {}).get("Friction Coefficient")
-    failed += check(runs == 2 and fd.get("rel_diff", 1.0) <= 1e-4 and deta is not None,
+    failed += checks.check(runs == 2 and fd.get("rel_diff", 1.0) <= 1e-4 and deta is not None,
                     f"adaptive with sensitivities: FD runs {runs}, DDM vs FD {fd.get('rel_diff')}, "
                     f"dF/dnu estimate {deta}")
 
@@ -150,7 +145,7 @@ def main():
                                                  "Mesh/Uniform Refinements=1"], quiet=True, clean=True)
     refined = ((summary.load(out) or {}).get("adaptivity") or {}).get("cycles") or []
     ratio = refined[1]["dofs"] / cycles[1]["dofs"] if len(refined) > 1 and len(cycles) > 1 else None
-    failed += check(run.status == 0 and ratio is not None and 0.7 <= ratio <= 1.4,
+    failed += checks.check(run.status == 0 and ratio is not None and 0.7 <= ratio <= 1.4,
                     f"adaptive from a refined first mesh: exit {run.status}, cycle-1 dofs "
                     f"{[c.get('dofs') for c in refined]} against {[c.get('dofs') for c in cycles]} (ratio {ratio})")
 
@@ -163,7 +158,7 @@ def main():
     ref = REFERENCE[("xml/extrusion_axisym.xml", "0.1")][0]
     ok = run.status == 0 and (s.get("adaptivity") or {}).get("target_met") is True and force is not None and \
         eta is not None and abs(eta) <= 0.005 * abs(force) and abs(ref - force) <= 2 * 0.005 * ref
-    failed += check(ok, f"adaptive axisymmetric scene: exit {run.status}, F = {force}, estimate {eta}, "
+    failed += checks.check(ok, f"adaptive axisymmetric scene: exit {run.status}, F = {force}, estimate {eta}, "
                         f"true {ref - (force or 0):.4g}")
 
     # Bad input is refused before any work (the run would take seconds), nothing written.
@@ -174,7 +169,7 @@ def main():
         out = os.path.join(work, "adaptive_bad")
         run = launcher.run(flowform, extrusion, out, sets, clean=True, capture=True)
         solved = "newton" in (run.stdout or "") + (run.stderr or "")
-        failed += check(run.status == 2 and not os.path.exists(out) and not solved,
+        failed += checks.check(run.status == 2 and not os.path.exists(out) and not solved,
                         f"adaptive, {label}: exit {run.status} (2 expected), solved first: {solved}, "
                         f"nothing written")
     print(f"error estimate checks: {failed} failed")

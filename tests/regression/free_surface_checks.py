@@ -59,14 +59,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import launcher, summary  # noqa: E402
+from flowform_tools import checks, launcher, summary  # noqa: E402
 
 NO_FILES = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
-
-
-def check(ok, text):
-    print(f"{'ok  ' if ok else 'FAIL'} {text}")
-    return 0 if ok else 1
 
 
 def solve(flowform, case, out, sets):
@@ -89,41 +84,41 @@ def main():
             if h != "0.1":
                 continue
             iterations = s.get("free_surface_iterations")
-            failed += check(status == 0 and f.get("swell") is not None and abs(f["swell"] - tanner) <= 0.01
+            failed += checks.check(status == 0 and f.get("swell") is not None and abs(f["swell"] - tanner) <= 0.01
                             and iterations is not None and 1 <= iterations <= 15,
                             f"{key} Newtonian swell {f.get('swell')} (Tanner {tanner}), exit {status}, "
                             f"{iterations} updates")
             if status != 0:
                 continue
             total = f["inflow"] + f["outflow"] + f["surface_flux"]
-            failed += check(abs(total) <= 1e-10 * abs(f["inflow"]) and abs(f["surface_flux"]) <= 1.2e-3,
+            failed += checks.check(abs(total) <= 1e-10 * abs(f["inflow"]) and abs(f["surface_flux"]) <= 1.2e-3,
                             f"{key} mass: inflow + outflow + surface = {total:.2e}, surface flux {f['surface_flux']:.2e}")
             traction = 4.0 if key == "plane" else 10.7
             power_in = -traction * f["inflow"]
             balance = power_in - f["plastic"] - f["stab"]
-            failed += check(abs(balance) <= 1e-8 * power_in,
+            failed += checks.check(abs(balance) <= 1e-8 * power_in,
                             f"{key} power: inlet {power_in:.6f} - plastic - stabilization = {balance:.2e}")
     s02, s01, s005 = swell[("plane", "0.2")], swell[("plane", "0.1")], swell[("plane", "0.05")]
-    failed += check(None not in (s02, s01, s005) and abs(s01 - s005) < abs(s02 - s01),
+    failed += checks.check(None not in (s02, s01, s005) and abs(s01 - s005) < abs(s02 - s01),
                     f"planar swell converges under refinement: {s02}, {s01}, {s005}")
 
     status, s = solve(flowform, os.path.join(source, "xml/die_swell.xml"), os.path.join(work, "swell_arc_length"),
                       NO_FILES + ["Boundary Conditions/free_surface/Update=Arc Length"])
     arc = (s.get("functionals") or {}).get("swell")
-    failed += check(status == 0 and arc is not None and s01 is not None and abs(arc - s01) <= 5e-4
+    failed += checks.check(status == 0 and arc is not None and s01 is not None and abs(arc - s01) <= 5e-4
                     and s.get("free_surface_iterations", 99) <= 15,
                     f"arc-length update: swell {arc} against the spines' {s01}, {s.get('free_surface_iterations')} updates")
 
     status, s = solve(flowform, os.path.join(source, "xml/die_swell.xml"), os.path.join(work, "swell_newton"),
                       NO_FILES + ["Free Surface/Relaxation=Newton"])
     newton = (s.get("functionals") or {}).get("swell")
-    failed += check(status == 0 and newton is not None and abs(newton - s01) <= 3e-4
+    failed += checks.check(status == 0 and newton is not None and abs(newton - s01) <= 3e-4
                     and s.get("free_surface_iterations", 99) <= 3,
                     f"Newton on the positions: swell {newton} against {s01}, {s.get('free_surface_iterations')} updates")
     status, s = solve(flowform, os.path.join(source, "xml/die_swell.xml"), os.path.join(work, "swell_quads"),
                       NO_FILES + ["Mesh/Element Type=Quadrilateral"])
     quads = (s.get("functionals") or {}).get("swell")
-    failed += check(status == 0 and quads is not None and abs(quads - 1.19) <= 0.01,
+    failed += checks.check(status == 0 and quads is not None and abs(quads - 1.19) <= 0.01,
                     f"quadrilaterals (Q1/Q1): swell {quads} (Tanner 1.19), {s.get('free_surface_iterations')} updates")
 
     thinning = {}
@@ -131,13 +126,13 @@ def main():
         status, s = solve(flowform, os.path.join(source, "xml/die_swell.xml"), os.path.join(work, f"swell_n{n}"),
                           NO_FILES + [f"Material/Rate Exponent={n}"])
         thinning[n] = (s.get("functionals") or {}).get("swell") if status == 0 else None
-    failed += check(None not in thinning.values() and s01 is not None and s01 > thinning["2.0"] > thinning["5.0"]
+    failed += checks.check(None not in thinning.values() and s01 is not None and s01 > thinning["2.0"] > thinning["5.0"]
                     and abs(thinning["5.0"] - 1.0) <= 0.02,
                     f"shear thinning: swell n = 1, 2, 5: {s01}, {thinning['2.0']}, {thinning['5.0']}")
 
     status, s = solve(flowform, os.path.join(source, "xml/die_swell.xml"), os.path.join(work, "swell_cap"),
                       NO_FILES + ["Free Surface/Maximum Iterations=2"])
-    failed += check(status == 3 and s.get("free_surface_iterations") == 2 and "did not converge" in s.get("message", ""),
+    failed += checks.check(status == 3 and s.get("free_surface_iterations") == 2 and "did not converge" in s.get("message", ""),
                     f"cap: exit {status}, {s.get('free_surface_iterations')} updates, message '{s.get('message')}'")
 
     separation = os.path.join(source, "xml/extrusion_separation.xml")
@@ -151,7 +146,7 @@ def main():
         leak = f["outflow"] + f["inflow"] if status == 0 else None
         # Through the land: at most the flow-angle tolerance times |u| (2) times its length (1.5).
         land_bound = 3.0 * (1e-7 if tolerances else 1e-4)
-        failed += check(status == 0 and abs(leak) <= bound and abs(f["land"]) <= land_bound and f.get("gap", 0.0) > 0.0
+        failed += checks.check(status == 0 and abs(leak) <= bound and abs(f["land"]) <= land_bound and f.get("gap", 0.0) > 0.0
                         and 1 <= s.get("free_surface_iterations", 0) <= 15,
                         f"separating land, kappa_n = {kappa}: outflow + inflow = {leak}, through the land "
                         f"{f.get('land')}, gap {f.get('gap')}, {s.get('free_surface_iterations')} updates, exit {status}")
@@ -160,7 +155,7 @@ def main():
                                   "Responses/inflow/Boundary=ram", "Responses/outflow/Type=Flow Rate",
                                   "Responses/outflow/Boundary=outlet"])
     f = s.get("functionals") or {}
-    failed += check(status == 0 and f["outflow"] + f["inflow"] < -0.01,
+    failed += checks.check(status == 0 and f["outflow"] + f["inflow"] < -0.01,
                     f"open die lip (the paper's): outflow + inflow = {f.get('outflow', 0) + f.get('inflow', 0):.4f}")
 
     adaptive = {}
@@ -170,7 +165,7 @@ def main():
         adaptive[land] = (status, (s.get("functionals") or {}).get("ram_force"),
                           (s.get("functionals_error_estimate") or {}).get("ram_force"))
     (sa, fa, ea), (sb, fb, eb) = adaptive["Free Surface"], adaptive["Never"]
-    failed += check(sa == 0 and sb == 0 and abs(fa - fb) <= abs(ea) + abs(eb),
+    failed += checks.check(sa == 0 and sb == 0 and abs(fa - fb) <= abs(ea) + abs(eb),
                     f"adaptive ram force, separating land {fa} +- {ea}, bilateral {fb} +- {eb}")
 
     status, s = solve(flowform, separation, os.path.join(work, "sensitivity"),
@@ -178,12 +173,12 @@ def main():
                                   "Sensitivity/Finite Difference Check=true"])
     force = ((s.get("fd_check") or {}).get("ram_force") or {}).get("Friction Coefficient") or {}
     gap = ((s.get("fd_check") or {}).get("gap") or {}).get("Friction Coefficient") or {}
-    failed += check(status == 0 and force.get("rel_diff", 1.0) <= 1e-5 and force.get("shape_gap", 0.0) > 0.0
+    failed += checks.check(status == 0 and force.get("rel_diff", 1.0) <= 1e-5 and force.get("shape_gap", 0.0) > 0.0
                     and gap.get("ddm") == 0.0 and abs(gap.get("fd_moving_shape", 0.0)) > 0.0,
                     f"dF/dnu: DDM {force.get('ddm')}, FD frozen {force.get('fd')} (rel {force.get('rel_diff')}), "
                     f"FD moving {force.get('fd_moving_shape')} (gap {force.get('shape_gap')}); d(gap)/dnu moving "
                     f"{gap.get('fd_moving_shape')}")
-    failed += check(force.get("rel_diff_total_shape", 1.0) <= 1e-4 and gap.get("rel_diff_total_shape", 1.0) <= 1e-3,
+    failed += checks.check(force.get("rel_diff_total_shape", 1.0) <= 1e-4 and gap.get("rel_diff_total_shape", 1.0) <= 1e-3,
                     f"total derivatives through the surface = FD moving: dF/dnu {force.get('ddm_total_shape')} "
                     f"(rel {force.get('rel_diff_total_shape')}), d(gap)/dnu {gap.get('ddm_total_shape')} "
                     f"(rel {gap.get('rel_diff_total_shape')})")
@@ -191,7 +186,7 @@ def main():
                       NO_FILES + ["Sensitivity/Parameters={Rate Exponent}", "Sensitivity/Finite Difference Check=true"])
     entries = {r: ((s.get("fd_check") or {}).get(r) or {}).get("Rate Exponent") or {} for r in ("swell", "outflow")}
     shape = s.get("shape_derivative") or {}
-    failed += check(status == 0 and all(e.get("rel_diff_total_shape", 1.0) <= 1e-3 for e in entries.values())
+    failed += checks.check(status == 0 and all(e.get("rel_diff_total_shape", 1.0) <= 1e-3 for e in entries.values())
                     and 0.0 < shape.get("contraction", 1.0) < 1.0,
                     f"d(swell)/dn total {entries['swell'].get('ddm_total_shape')} vs FD moving "
                     f"{entries['swell'].get('fd_moving_shape')} (rel {entries['swell'].get('rel_diff_total_shape')}); "
@@ -203,25 +198,24 @@ def main():
                        ("start_unknown", ["Boundary Conditions/free_surface/Start Group=nowhere"])):
         out = os.path.join(work, f"bad_{name}")
         run = launcher.run(flowform, swell_case, out, sets, quiet=True, clean=True)
-        failed += check(run.status == 2 and not os.path.exists(out), f"bad input {name}: exit {run.status}")
+        failed += checks.check(run.status == 2 and not os.path.exists(out), f"bad input {name}: exit {run.status}")
     out = os.path.join(work, "bad_gap_not_a_wall")
     run = launcher.run(flowform, os.path.join(source, "xml/extrusion.xml"), out,
                        ["Adaptivity/Enabled=false", "Responses/gap/Type=Wall Gap", "Responses/gap/Boundary=outlet"],
                        quiet=True, clean=True)
-    failed += check(run.status == 2 and not os.path.exists(out), f"bad input Wall Gap on a non-wall: exit {run.status}")
+    failed += checks.check(run.status == 2 and not os.path.exists(out), f"bad input Wall Gap on a non-wall: exit {run.status}")
     out = os.path.join(work, "bad_wall_without_start")
     run = launcher.run(flowform, separation, out, ["Boundary Conditions/die_land/Start Group="], quiet=True, clean=True)
-    failed += check(run.status == 2 and not os.path.exists(out), f"bad input wall without Start Group: exit {run.status}")
+    failed += checks.check(run.status == 2 and not os.path.exists(out), f"bad input wall without Start Group: exit {run.status}")
 
     plots = os.path.join(work, "plots")
     run = launcher.run_command([sys.executable, os.path.join(source, "scripts/plot_free_surface.py"),
                                 os.path.join(work, "swell_plane_0.1"), "--out", plots], capture=True)
     made = [os.path.join(plots, f) for f in ("free_surface_swell_plane_0.1.png", "surfaces.png")]
-    failed += check(run.status == 0 and all(os.path.isfile(f) and os.path.getsize(f) > 10000 for f in made),
+    failed += checks.check(run.status == 0 and checks.pictures_drawn(made),
                     f"plot_free_surface.py: exit {run.status}, {made}")
 
-    print("FAILED" if failed else "PASSED")
-    return 1 if failed else 0
+    return checks.verdict(failed)
 
 
 if __name__ == "__main__":
