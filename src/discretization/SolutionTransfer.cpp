@@ -32,4 +32,18 @@ void interpolate(const Mesh& fromMesh, const DofMap& fromDofs, const std::vector
   }
 }
 
+std::vector<std::array<double, 2>> carryShape(const Mesh& fromMade, const Mesh& fromMoved, const Mesh& toMesh) {
+  const PointLocator locator(fromMade);
+  const int npc = nodesPerCell(fromMade.cellType);
+  std::vector<std::array<double, 2>> moved(toMesh.coords.size());
+  for (std::size_t n = 0; n < moved.size(); ++n) {
+    const CellPoint at = locator.locate(toMesh.coords[n]);
+    const GO* cell = fromMade.cell(at.cell);
+    moved[n] = {0.0, 0.0};
+    for (int a = 0; a < npc; ++a)
+      for (int d = 0; d < 2; ++d) moved[n][d] += at.weights[a] * fromMoved.coords[cell[a]][d];
+  }
+  return moved;
+}
+
 }  // namespace flowform

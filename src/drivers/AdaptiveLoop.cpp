@@ -60,7 +60,9 @@ std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::stri
   double sum = 0.0;
   for (double v : e) sum += std::pow(v, 2.0 / (s + 2.0));
   const double lambda = sum > 0.0 ? std::pow(0.5 / sum, (s + 2.0) / s) : 0.0;
-  std::vector<double> h = nodalSizes(mesh), next(h.size());
+  // The sizes are those of the mesh as made, where the next mesh is made (the free surfaces'
+  // moves stretch both alike: carryShape maps the next mesh as it maps this one).
+  std::vector<double> h = nodalSizes(sim.meshAsMade()), next(h.size());
   double predictedNodes = 0.0;
   for (GO n = 0; n < mesh.numNodes(); ++n) {
     const double ratio = e[n] > 0.0 ? std::clamp(std::pow(lambda / e[n], 1.0 / (s + 2.0)), kMinRatio, kMaxRatio) : kMaxRatio;
@@ -103,7 +105,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
     sim = std::make_unique<Simulation>(cycle == 0 ? caseParams : remeshed, baseDir, comm,
                                        cycle == 0 ? nullptr : &field);
     if (cycle == 0) {  // the targets and the .geo were checked with the case (validateCase)
-      const std::vector<double> h = nodalSizes(sim->mesh());
+      const std::vector<double> h = nodalSizes(sim->meshAsMade());
       maxSize = *std::max_element(h.begin(), h.end());
       minSize = kSmallestSize * *std::min_element(h.begin(), h.end());
     }

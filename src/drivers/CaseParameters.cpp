@@ -127,9 +127,10 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   Teuchos::setStringToIntegralParameter<int>(
       "Method", "None",
       "None; Two-Level: every response (and sensitivity) gets an estimate of its discretization error from a "
-      "solve on the uniformly refined mesh started from the interpolated solution and contact statuses, "
-      "eta = (phi_refined - phi) / (1 - 2^-Order), written to summary.json functionals_error_estimate and "
-      "sensitivities_error_estimate (docs/theory.md §7)",
+      "solve on the uniformly refined mesh started from the interpolated solution and contact statuses (and "
+      "the converged free surfaces' shape), eta = (phi_refined - phi) / (1 - 2^-Order), written to summary.json "
+      "functionals_error_estimate, sensitivities_error_estimate and sensitivities_total_shape_error_estimate "
+      "(docs/theory.md §7)",
       Teuchos::tuple<std::string>("None", "Two-Level"), &estimation);
   estimation.set("Order", 1.0,
                  "p, the order in h at which the responses' error falls under uniform refinement: 1 where a singular "

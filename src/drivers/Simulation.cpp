@@ -168,11 +168,18 @@ void Simulation::estimateErrors(const std::vector<std::string>& indicatorRespons
   for (const auto& [name, byParameter] : m_estimate->sensitivities)
     for (const auto& [parameter, eta] : byParameter)
       log() << "flowform: d" << name << "/d(" << parameter << ") estimated error " << eta << "\n";
+  for (const auto& [name, byParameter] : m_estimate->sensitivitiesTotalShape)
+    for (const auto& [parameter, eta] : byParameter)
+      log() << "flowform: d" << name << "/d(" << parameter << ") through the free surfaces, estimated error " << eta
+            << "\n";
   log() << "flowform: error estimate on the refined mesh (" << m_estimate->refinedDofs << " dofs) in "
         << m_estimate->seconds << " s\n";
 }
 
 void Simulation::startFrom(const Simulation& other, bool decideZoneLimits) {
+  // The other mesh's free surfaces moved: this mesh, as made, takes their shape first (carryShape).
+  if (other.m_mesh.coords != other.m_madeCoords)
+    moveNodes(carryShape(other.meshAsMade(), other.mesh(), meshAsMade()));
   interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap,
               *m_solution);
   m_bcs->imposeOnSolution(*m_solution);

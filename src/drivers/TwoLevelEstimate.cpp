@@ -94,6 +94,14 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
     auto it = estimate.refinedFunctionals.find(name);
     if (it != estimate.refinedFunctionals.end()) estimate.functionals[name] = factor * (it->second - value);
   }
+  if (!fine.freeSurfaces().empty()) estimate.refinedSurfaceUpdates = fine.freeSurfaceReport().iterations;
+  if (coarse.shapeDerivative().computed && fine.shapeDerivative().computed) {
+    estimate.refinedSensitivitiesTotalShape = fine.shapeDerivative().responses;
+    for (const auto& [name, byParameter] : coarse.shapeDerivative().responses)
+      for (const auto& [parameter, value] : byParameter)
+        estimate.sensitivitiesTotalShape[name][parameter] =
+            factor * (estimate.refinedSensitivitiesTotalShape[name][parameter] - value);
+  }
   if (coarse.sensitivity().computed() && fine.sensitivity().computed()) {
     estimate.refinedSensitivities = fine.sensitivity().responseDerivatives();
     for (const auto& [name, byParameter] : coarse.sensitivity().responseDerivatives())
@@ -117,6 +125,11 @@ void ErrorEstimate::report(nlohmann::json& summary) const {
                                  {"refined_functionals", refinedFunctionals},
                                  {"seconds", seconds}};
   if (!refinedSensitivities.empty()) summary["error_estimation"]["refined_sensitivities"] = refinedSensitivities;
+  if (!sensitivitiesTotalShape.empty()) {
+    summary["sensitivities_total_shape_error_estimate"] = sensitivitiesTotalShape;
+    summary["error_estimation"]["refined_sensitivities_total_shape"] = refinedSensitivitiesTotalShape;
+  }
+  if (refinedSurfaceUpdates >= 0) summary["error_estimation"]["refined_free_surface_iterations"] = refinedSurfaceUpdates;
 }
 
 }  // namespace flowform

@@ -7,6 +7,8 @@
 // - a P1/Q1 field of arbitrary nodal values on a coarse mesh, interpolated onto the uniformly
 //   refined mesh, keeps its values at the coarse nodes and takes the edge averages at the
 //   midpoints (nested spaces: exact), on 1 and 2 ranks (replicate is collective);
+// - the moved shape of a coarse mesh carried to its refinement as made (carryShape): the refined
+//   nodes land on the moved coarse nodes and the midpoints of the moved edges;
 // - wall statuses carried to a refined wall: coarse nodes keep theirs, a midpoint is active
 //   only between two active nodes, or, given the velocities, inside a zone limit when it
 //   penetrates.
@@ -113,6 +115,32 @@ TEUCHOS_UNIT_TEST(Transfer, NestedRefinementCarriesAFieldExactly) {
         TEST_FLOATING_EQUALITY(v(fineDofs.dof(n, f), 0), expected, 1e-12);
       }
     }
+  }
+}
+
+TEUCHOS_UNIT_TEST(Transfer, ARefinedMeshTakesTheMovedShape) {
+  // The coarse mesh as made, the same mesh after a free-surface loop moved its nodes (a smooth
+  // non-affine map), and the refined mesh as made: carryShape puts the refined nodes at the
+  // moved coarse nodes and at the midpoints of the moved coarse edges, so the refined free
+  // surfaces lie on the moved ones.
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4}) {
+    const int nx = 4, ny = 2;
+    auto grid = [](int i, int j, double size) { return std::array<double, 2>{size * i, size * j}; };
+    const Mesh made = test::structuredMesh(type, nx, ny, "made", [&](int i, int j) { return grid(i, j, 0.5); });
+    Mesh moved = made;
+    for (auto& xy : moved.coords) xy = {xy[0] + 0.1 * xy[1] * xy[1], 1.3 * xy[1] + 0.05 * std::sin(xy[0])};
+    const Mesh fine = test::structuredMesh(type, 2 * nx, 2 * ny, "fine", [&](int i, int j) { return grid(i, j, 0.25); });
+    const std::vector<std::array<double, 2>> carried = carryShape(made, moved, fine);
+    TEST_EQUALITY(carried.size(), fine.coords.size());
+    auto coarse = [&](int ci, int cj) { return moved.coords[cj * (nx + 1) + ci]; };
+    for (int j = 0; j <= 2 * ny; ++j)
+      for (int i = 0; i <= 2 * nx; ++i) {
+        if (i % 2 == 1 && j % 2 == 1) continue;  // cell interiors: the diagonal's or the centre's
+        const std::array<double, 2> a = coarse(i / 2, j / 2);
+        const std::array<double, 2> b = coarse((i + 1) / 2, (j + 1) / 2);
+        for (int d = 0; d < 2; ++d)
+          TEST_FLOATING_EQUALITY(carried[j * (2 * nx + 1) + i][d] + 1.0, 0.5 * (a[d] + b[d]) + 1.0, 1e-12);
+      }
   }
 }
 

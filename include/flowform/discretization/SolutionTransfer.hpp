@@ -5,6 +5,7 @@
 // exactly.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "flowform/core/TpetraTypes.hpp"
@@ -21,5 +22,13 @@ std::vector<double> replicate(const Vector& x, const DofMap& dofMap);
 /// fields at every node. Not collective.
 void interpolate(const Mesh& fromMesh, const DofMap& fromDofs, const std::vector<double>& fromValues,
                  const Mesh& toMesh, const DofMap& toDofs, Vector& toOwned);
+
+/// The nodes of `toMesh` (a mesh of the same domain as `fromMade`: a refined copy, a remeshed
+/// one) moved as `fromMade`'s nodes moved to `fromMoved` (the same mesh after free-surface
+/// updates): each node is located in `fromMade` and placed at the same shape-function weights
+/// in the moved cell, x' = Σ_a N_a(x) x'_a. On a nested refinement the refined free surfaces
+/// then lie on the moved ones exactly, so a field interpolated afterwards carries over exactly
+/// too. Not collective (the meshes are replicated).
+std::vector<std::array<double, 2>> carryShape(const Mesh& fromMade, const Mesh& fromMoved, const Mesh& toMesh);
 
 }  // namespace flowform

@@ -111,6 +111,8 @@ class Simulation {
   /// The case's responses at the current solution (empty before run()).
   const std::map<std::string, double>& functionals() const { return m_functionals; }
   const Sensitivity& sensitivity() const { return *m_sensitivity; }
+  /// The total derivatives through the moving free surfaces (computed false when not made).
+  const ShapeDerivative& shapeDerivative() const { return m_shapeDerivative; }
   const Responses& responses() const { return *m_responses; }
 
   /// Nodal velocity and pressure, and the cell fields the case asks for, gathered on rank 0

@@ -15,7 +15,12 @@
 // the ram force first order in the corner size; on a smooth problem of order 2 the default
 // over-estimates by 1.5 at most). The sensitivities get the same: dφ/dh by DDM at u_f on the
 // refined mesh (one more factorization and back-substitution there),
-// η = (dφ_f/dh − dφ_h/dh) / (1 − 2^(−p)).
+// η = (dφ_f/dh − dφ_h/dh) / (1 − 2^(−p)), and so do the total derivatives through moving free
+// surfaces (ShapeDerivative on the refined mesh).
+//
+// With free surfaces the refined mesh first takes the converged shape (carryShape: the refined
+// nodes placed in the moved coarse cells as they lay in the cells as made), and the refined
+// free-surface loop starts from there, not from the .geo's starting shape.
 //
 // The indicators are the dual-weighted residual with the adjoint solved on the refined space:
 // with K_fᵀ z_f = ∂φ_f/∂q (the transposed factors of the exact K_f at I u_h), the linearized
@@ -49,15 +54,21 @@ struct ErrorEstimate {
   std::map<std::string, double> functionals;
   /// η of dφ/dh: response → parameter → value (when the case asks for sensitivities).
   std::map<std::string, std::map<std::string, double>> sensitivities;
-  /// φ_f and dφ_f/dh on the refined mesh.
+  /// η of the total dφ/dh through the moving free surfaces (ShapeDerivative), when computed.
+  std::map<std::string, std::map<std::string, double>> sensitivitiesTotalShape;
+  /// φ_f and dφ_f/dh (frozen shape and total) on the refined mesh.
   std::map<std::string, double> refinedFunctionals;
   std::map<std::string, std::map<std::string, double>> refinedSensitivities;
+  std::map<std::string, std::map<std::string, double>> refinedSensitivitiesTotalShape;
+  /// Free-surface updates the refined solve took from the carried shape (−1: no free surfaces).
+  int refinedSurfaceUpdates = -1;
   /// Per node of the coarse mesh and per indicator response: |share of η| (replicated).
   std::map<std::string, std::vector<double>> indicators;
   GO refinedDofs = 0;
   double seconds = 0.0;
 
-  /// "functionals_error_estimate", "sensitivities_error_estimate" and "error_estimation"
+  /// "functionals_error_estimate", "sensitivities_error_estimate",
+  /// "sensitivities_total_shape_error_estimate" and "error_estimation"
   /// (method, order, refined dofs and responses, seconds) into the summary.
   void report(nlohmann::json& summary) const;
 };
