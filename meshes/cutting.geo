@@ -23,7 +23,12 @@
 // the workpiece's top surface y = t at a sharp corner, which the loop moves and rounds; the
 // inner surface is the rake face itself until it separates. docs/cutting.md §3 measures how the
 // converged chip depends on tc.
-// Sizes: hc at the tip and along the shear zone's line (tip -> corner), h elsewhere, graded over dc.
+// Sizes: hc at the tip and along a shear plane, h elsewhere, graded over dc. The shear plane is
+// the line from the tip to the starting chip's corner (phi = 0, the default), or at the angle
+// phi (degrees) to the cut line, up to the workpiece's top surface: a guess of the converged
+// shear angle (ν = 0.2 converges to 25.8, the ν sweep 0 ... 0.5 to 20 ... 31). phi = 26 halves
+// the estimated error of t/t_c at h = 0.1 but the loop needs more updates (docs/cutting.md §6).
+// A phi steeper than the start's corner ends the line at the corner.
 
 DefineConstant[
   t = {1.0, Min 0.05, Max 10, Step 0.1, Name "Parameters/t", Label "uncut chip thickness"},
@@ -37,7 +42,8 @@ DefineConstant[
 ];
 DefineConstant[
   hc = {h / 4, Min 1e-5, Max 1, Step 0.005, Name "Parameters/hc", Label "mesh size at the tip and shear zone"},
-  dc = {0.5, Min 0, Max 10, Step 0.05, Name "Parameters/dc", Label "distance over which hc grows to h"}
+  dc = {0.5, Min 0, Max 10, Step 0.05, Name "Parameters/dc", Label "distance over which hc grows to h"},
+  phi = {0, Min 0, Max 80, Step 1, Name "Parameters/phi", Label "shear angle the mesh is refined along (degrees; 0: to the start's corner)"}
 ];
 
 If (H <= t + 0.1)
@@ -67,13 +73,29 @@ Line(3) = {3, 4};  // machined surface
 Line(4) = {4, 5};  // rake face
 Line(5) = {5, 6};  // chip outlet
 Line(6) = {6, 7};  // chip back
-Line(7) = {7, 8};  // top of the uncut workpiece (the same free surface as the chip back)
 Line(8) = {8, 1};  // inlet
-Curve Loop(1) = {1, 2, 3, 4, 5, 6, 7, 8};
+
+// The shear plane's end on the top surface y = t (point 9), when it lies upstream of the corner.
+sx = cx;
+If (phi > 0)
+  sx = -t / Tan(phi * Pi / 180);
+EndIf
+If (sx < cx - 1e-3 * t && sx > -Lin + 1e-3 * t)
+  Point(9) = {sx, t, 0, hc};
+  Line(7) = {7, 9};   // top of the uncut workpiece (the same free surface as the chip back)
+  Line(10) = {9, 8};
+  Curve Loop(1) = {1, 2, 3, 4, 5, 6, 7, 10, 8};
+  Line(9) = {4, 9};   // the shear plane
+  top[] = {7, 10};
+Else
+  Line(7) = {7, 8};
+  Curve Loop(1) = {1, 2, 3, 4, 5, 6, 7, 8};
+  Line(9) = {4, 7};
+  top[] = {7};
+EndIf
 Plane Surface(1) = {1};
 
-// hc along the shear zone's line (tip -> corner) and at the tip.
-Line(9) = {4, 7};
+// hc along the shear plane and at the tip.
 Line{9} In Surface{1};
 Field[1] = Distance;
 Field[1].CurvesList = {9};
@@ -90,5 +112,5 @@ Physical Curve("far") = {8, 1, 2};
 Physical Curve("machined") = {3};
 Physical Curve("rake") = {4};
 Physical Curve("chip_outlet") = {5};
-Physical Curve("chip_back") = {6, 7};
+Physical Curve("chip_back") = {6, top[]};
 Physical Surface("workpiece") = {1};
