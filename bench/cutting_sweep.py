@@ -8,7 +8,8 @@ with the surfaces re-converged); the cost of each run.
 usage: bench/cutting_sweep.py [FLOWFORM] [--nu 0,0.1,0.2,0.3,0.5] [--h 0.1] [--workdir DIR]
                               [--sets PATH=VALUE ...] [--plot DIR] [--reuse]
 
-Writes DIR/sweep.json and prints a markdown table (docs/cutting.md §5). --plot DIR draws
+The runs skip the case's two-level error estimate (--sets "Error Estimation/Method=Two-Level"
+makes it: about 75 s more per ν with the sensitivities). Writes DIR/sweep.json and prints a markdown table (docs/cutting.md §5). --plot DIR draws
 cutting_sweep.png there: t/t_c and F_c/(k t) against ν with the Lee-Shaffer and Merchant curves,
 the DDM's total derivative as a tangent at each point and the re-converged FD as markers.
 
@@ -68,7 +69,7 @@ def run_one(flowform, case, workdir, nu, h, extra, reuse=False):
     previous = summary.load(out) if reuse else None
     sets = [f"Boundary Conditions/rake/Friction Coefficient={nu}", f"Mesh/Geo Parameters/h={h}",
             "Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true",
-            "Sensitivity/Finite Difference Step=2e-4"] + list(extra)
+            "Sensitivity/Finite Difference Step=2e-4", "Error Estimation/Method=None"] + list(extra)
     if previous and previous.get("exit_status") == 0:
         s, status = previous, 0  # --reuse: a converged run of an earlier sweep
         seconds = (s.get("timings") or {}).get("total", 0.0)

@@ -52,7 +52,8 @@ EndIf
 
 a = alpha * Pi / 180;
 // The rake face: from the tip (0, 0) up to y = H, leaning by alpha towards +x; the chip's back is
-// parallel to it at the distance tc (measured normal to the face).
+// parallel to it at the distance tc (measured normal to the face); the chip outlet runs from the
+// rake top normal to the face (the straight chip leaves across it).
 rx = H * Tan(a);
 bx = -tc / Cos(a);                  // back line's x at y = 0
 cy = t;                             // where the back meets the top surface y = t
@@ -63,7 +64,7 @@ Point(2) = {Lout, -D, 0, h};
 Point(3) = {Lout, 0, 0, h};
 Point(4) = {0, 0, 0, hc};           // the tool tip
 Point(5) = {rx, H, 0, h};           // the rake face's top
-Point(6) = {bx + H * Tan(a), H, 0, h};
+Point(6) = {rx - tc * Cos(a), H + tc * Sin(a), 0, h};  // the chip outlet is normal to the rake face
 Point(7) = {cx, cy, 0, hc};         // the corner of the starting chip
 Point(8) = {-Lin, t, 0, h};
 

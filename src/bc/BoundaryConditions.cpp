@@ -81,7 +81,8 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParamet
   if (valid.is_null()) {
     valid = Teuchos::rcp(new Teuchos::ParameterList("Boundary Condition"));
     Teuchos::setStringToIntegralParameter<int>(
-        "Type", "Traction", "Velocity: prescribed velocity components; Symmetry: zero normal "
+        "Type", "Traction", "Velocity: prescribed velocity components, or the velocity parallel to a straight "
+        "group (Parallel To); Symmetry: zero normal "
         "velocity on a straight boundary; Traction: prescribed traction (default zero: free). "
         "Traction X/Y act on any type, on the components it leaves free. Contact Wall: a frictional "
         "tool wall (its parameters: contact/ContactWall.hpp). Free Surface: traction-free, moved until it is a "
@@ -89,6 +90,9 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParamet
         Teuchos::tuple<std::string>("Velocity", "Symmetry", "Traction", "Contact Wall", "Free Surface"), valid.get());
     valid->set("Velocity X", 0.0, "prescribed u_x (Velocity type; omit to leave u_x free)");
     valid->set("Velocity Y", 0.0, "prescribed u_y (Velocity type; omit to leave u_y free)");
+    valid->set("Parallel To", "",
+               "Velocity type: the name of a straight boundary group (a tool face); u·n = 0 with n that group's "
+               "normal, the tangential component left free (a chip leaving along an inclined rake face)");
     valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components");
     valid->set("Traction Y", 0.0, "traction t_y, force per unit area, on free components");
   }
@@ -132,12 +136,32 @@ void BoundaryConditions::build(const Mesh& mesh) {
 
     if (type == "Velocity") {
       const bool hasX = group.isParameter("Velocity X"), hasY = group.isParameter("Velocity Y");
-      if (!hasX && !hasY)
-        throw InputError("Boundary Conditions/" + name + ": type Velocity needs 'Velocity X' and/or 'Velocity Y'");
+      const std::string parallelTo = group.get<std::string>("Parallel To", "");
+      if (!hasX && !hasY && parallelTo.empty())
+        throw InputError("Boundary Conditions/" + name +
+                         ": type Velocity needs 'Velocity X' and/or 'Velocity Y', or 'Parallel To'");
+      std::array<double, 2> normal{0.0, 0.0};
+      if (!parallelTo.empty()) {
+        if (hasX || hasY)
+          throw InputError("Boundary Conditions/" + name + ": 'Parallel To' constrains one component itself; "
+                           "give it without 'Velocity X' and 'Velocity Y'");
+        if (!m_faceNormals.count(parallelTo)) {  // the first build: the mesh as made
+          if (!mesh.hasBoundary(parallelTo))
+            throw InputError("Boundary Conditions/" + name + "/Parallel To: mesh '" + mesh.source +
+                             "' has no boundary group '" + parallelTo + "'; it has: " + mesh.boundaryNames());
+          const BoundaryCurve face = buildBoundaryCurve(mesh, mesh.boundary(parallelTo));
+          if (!face.isStraight(1e-8))
+            throw InputError("Boundary Conditions/" + name + "/Parallel To: group '" + parallelTo +
+                             "' must be straight (its normal is the constrained direction)");
+          m_faceNormals[parallelTo] = face.segmentNormals.front();
+        }
+        normal = m_faceNormals.at(parallelTo);
+      }
       for (const auto& e : bg.edges)
         for (GO n : e) {
           if (hasX) conditions[n].push_back({{1.0, 0.0}, group.get<double>("Velocity X"), name});
           if (hasY) conditions[n].push_back({{0.0, 1.0}, group.get<double>("Velocity Y"), name});
+          if (!parallelTo.empty()) conditions[n].push_back({{normal[0], normal[1]}, 0.0, name});  // u·n = 0
         }
     } else if (type == "Symmetry") {
       const BoundaryCurve curve = buildBoundaryCurve(mesh, bg);

@@ -30,9 +30,17 @@ usage: cutting_checks.py FLOWFORM SOURCE_DIR WORKDIR
    ratios agree within 0.03 (measured 0.5948 and 0.5859; the corner over starts 0.7 ... 1.4 moves
    by 0.06 of 1.7), and both lie below the thin-shear-zone value 1 (this scene's chip is thicker
    than theirs). The start 1.4 needs more updates (measured 77): its cap is raised to 150.
-3. Bad input exits 2 and writes nothing: a Contact Length or a Wall Force on a group that is not a
+3. Rake angle α = 10° (the chip outlet normal to the rake, the chip leaving parallel to it:
+   chip_outlet `Parallel To = rake`): at ν = 0 the rake carries no friction, so the tool's force
+   is normal to the face, F_t/F_c = −tan α, to 1e-8 (measured −0.17633 against −0.17633); at
+   ν = 0.2 the resultant leans from the normal by the effective friction angle,
+   tan(atan(F_t/F_c) + α) = T/N, between 0.9 ν and ν as at α = 0 (measured 0.197); the shear
+   angle is the rake-angle formula's, tan φ = r cos α / (1 − r sin α), to 1e-10; mass and
+   balances as above.
+4. Bad input exits 2 and writes nothing: a Contact Length or a Wall Force on a group that is not a
    contact wall, a Thickness Ratio with a Reference Thickness <= 0.
-4. scripts/plot_cutting.py draws run 1 (mesh, fields, |du/dν| DDM beside FD): exit 0, three PNGs
+   A Parallel To naming no group, or a curved one, exits 2 as well.
+5. scripts/plot_cutting.py draws run 1 (mesh, fields, |du/dν| DDM beside FD): exit 0, three PNGs
    of more than 10 kB.
 """
 import math
@@ -126,9 +134,36 @@ def main():
         failed += checks.check(abs(ratios["1.0"] - ratios["1.4"]) <= 0.03 and max(ratios.values()) < 1.0,
                         f"ν = 0: chip ratio {ratios['1.0']:.4f} (start 1.0), {ratios['1.4']:.4f} (start 1.4)")
 
+    alpha = 10.0
+    for nu in (0.0, 0.2):
+        status, s = solve(flowform, case, os.path.join(work, f"alpha10_nu{nu}"),
+                          NO_FILES + ["Error Estimation/Method=None", f"Mesh/Geo Parameters/alpha={alpha}",
+                                      f"Responses/shear_angle/Rake Angle={alpha}",
+                                      f"Boundary Conditions/rake/Friction Coefficient={nu}"])
+        f = s.get("functionals") or {}
+        failed += checks.check(status == 0, f"α = 10°, ν = {nu}: exit {status}, {s.get('free_surface_iterations')} updates")
+        if status != 0:
+            continue
+        failed += balances(f, f"α = 10°, ν = {nu}")
+        a = math.radians(alpha)
+        ratio = f["thrust_force"] / f["cutting_force"]
+        if nu == 0.0:
+            failed += checks.check(abs(ratio + math.tan(a)) <= 1e-8,
+                                   f"α = 10°, ν = 0: F_t/F_c = {ratio:.8f} (−tan α = {-math.tan(a):.8f})")
+        else:
+            lean = math.tan(math.atan(ratio) + a)
+            failed += checks.check(0.9 * nu <= lean <= nu + 1e-12,
+                                   f"α = 10°, ν = {nu}: F_t/F_c = {ratio:.5f}, friction T/N = {lean:.5f}")
+        r = f["chip_ratio"]
+        phi = math.degrees(math.atan(r * math.cos(a) / (1.0 - r * math.sin(a))))
+        failed += checks.check(abs(phi - f["shear_angle"]) <= 1e-10,
+                               f"α = 10°, ν = {nu}: shear angle {f['shear_angle']:.4f} (t/t_c = {r:.4f})")
+
     for name, sets in (("contact_length_not_a_wall", ["Responses/l/Type=Contact Length", "Responses/l/Boundary=far"]),
                        ("wall_force_not_a_wall", ["Responses/w/Type=Wall Force", "Responses/w/Boundary=machined"]),
-                       ("reference_thickness", ["Responses/chip_ratio/Reference Thickness=0"])):
+                       ("reference_thickness", ["Responses/chip_ratio/Reference Thickness=0"]),
+                       ("parallel_to_nothing", ["Boundary Conditions/chip_outlet/Parallel To=tool"]),
+                       ("parallel_to_curved", ["Boundary Conditions/chip_outlet/Parallel To=far"])):
         out = os.path.join(work, f"bad_{name}")
         run = launcher.run(flowform, case, out, sets, quiet=True, clean=True)
         failed += checks.check(run.status == 2 and not os.path.exists(out), f"bad input {name}: exit {run.status}")

@@ -1,5 +1,6 @@
 // Boundary conditions by gmsh physical-group name (docs/theory.md §2, first bullet):
-//   Velocity   — one or both components prescribed ("Velocity X", "Velocity Y")
+//   Velocity   — one or both components prescribed ("Velocity X", "Velocity Y"), or the velocity
+//                parallel to a straight group ("Parallel To": u·n = 0, n its normal as made)
 //   Symmetry   — zero normal velocity on a straight boundary of any orientation
 //   Traction   — a given traction vector t̄ ("Traction X", "Traction Y"; default 0 = free)
 // Contact Wall and Free Surface groups are validated and handled elsewhere (contact/,
@@ -17,6 +18,8 @@
 // the owner of the node adds the constraint rows once (Assembler).
 #pragma once
 
+#include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -91,6 +94,9 @@ class BoundaryConditions {
   const DofMap& m_dofMap;
   std::vector<NodeConstraint> m_constraints;
   std::vector<TractionEdge> m_tractionEdges;
+  /// The normals of the groups named by Parallel To, taken from the mesh as first built: a tool
+  /// face is rigid, while free-surface updates may move its released nodes off it.
+  std::map<std::string, std::array<double, 2>> m_faceNormals;
 };
 
 }  // namespace flowform
