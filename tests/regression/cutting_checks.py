@@ -34,7 +34,7 @@ usage: cutting_checks.py FLOWFORM SOURCE_DIR WORKDIR
    chip_outlet `Parallel To = rake`): at ν = 0 the rake carries no friction, so the tool's force
    is normal to the face, F_t/F_c = −tan α, to 1e-8 (measured −0.17633 against −0.17633); at
    ν = 0.2 the resultant leans from the normal by the effective friction angle,
-   tan(atan(F_t/F_c) + α) = T/N, between 0.9 ν and ν as at α = 0 (measured 0.197); the shear
+   tan(atan(F_t/F_c) + α) = T/N, between 0.9 ν and ν as at α = 0 (measured 0.1996); the shear
    angle is the rake-angle formula's, tan φ = r cos α / (1 − r sin α), to 1e-10; mass and
    balances as above.
 4. Bad input exits 2 and writes nothing: a Contact Length or a Wall Force on a group that is not a
