@@ -93,6 +93,10 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParamet
     valid->set("Parallel To", "",
                "Velocity type: the name of a straight boundary group (a tool face); u·n = 0 with n that group's "
                "normal, the tangential component left free (a chip leaving along an inclined rake face)");
+    valid->set("Release After Free Surfaces", false,
+               "Velocity type: the condition holds while the free surfaces first converge; then the group is "
+               "released (traction-free) and the free-surface loop goes on from that shape: a continuation for a "
+               "boundary the loop cannot converge free from the start (a curling chip's outlet)");
     valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components");
     valid->set("Traction Y", 0.0, "traction t_y, force per unit area, on free components");
   }
@@ -106,6 +110,26 @@ BoundaryConditions::BoundaryConditions(const Teuchos::ParameterList& bcList, con
 }
 
 void BoundaryConditions::refreshGeometry(const Mesh& mesh) { build(mesh); }
+
+bool BoundaryConditions::releaseHeld(const Mesh& mesh) {
+  bool released = false;
+  for (auto it = m_bcList.begin(); it != m_bcList.end(); ++it) {
+    const std::string& name = m_bcList.name(it);
+    if (!m_bcList.isSublist(name)) continue;
+    Teuchos::ParameterList& group = m_bcList.sublist(name);
+    if (!group.isType<bool>("Release After Free Surfaces") || !group.get<bool>("Release After Free Surfaces"))
+      continue;
+    Teuchos::ParameterList free(name);
+    free.set("Type", "Traction");
+    for (const char* key : {"Traction X", "Traction Y"})
+      if (group.isParameter(key)) free.set(key, group.get<double>(key));
+    group = free;
+    m_released.push_back(name);
+    released = true;
+  }
+  if (released) build(mesh);
+  return released;
+}
 
 void BoundaryConditions::build(const Mesh& mesh) {
   const Teuchos::ParameterList& bcList = m_bcList;

@@ -149,6 +149,34 @@ void ContactWall::setScales(std::vector<double> viscosity, std::vector<double> f
   m_flowStress = std::move(flowStress);
 }
 
+double ContactWall::violation(int k, const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
+                              double pressureTolerance, double penetrationTolerance) const {
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  if (held(k) || (m_active[k] != kFree && m_settings.neverReleased)) return kNone;  // no status change
+  const auto& n = m_curve.normals[k];
+  const double un = u[k][0] * n[0] + u[k][1] * n[1];
+  if (m_active[k] == kSelfDeciding) return -un - penetrationTolerance;  // it leaves the tool: free
+  if (m_active[k] == kActive) return -p[k] - pressureTolerance;          // tension beyond the tolerance
+  if (gap(k) > 1e-9 * m_curve.arcLength.back()) return kNone;  // off the tool: the surface update brings it back
+  double v = un - penetrationTolerance;                        // moving into the tool
+  for (const auto& other : m_cornerNormals[k])  // convex tool corner: into every half-plane
+    v = std::min(v, u[k][0] * other[0] + u[k][1] * other[1] - penetrationTolerance);
+  return v;
+}
+
+int ContactWall::letCyclingNodesDecide(const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
+                                      double pressureTolerance, double penetrationTolerance, int maxChangesPerNode) {
+  int count = 0;
+  for (int k = 0; k < numNodes(); ++k)
+    if (m_changes[k] >= maxChangesPerNode && m_active[k] != kSelfDeciding &&
+        violation(k, p, u, pressureTolerance, penetrationTolerance) > 0.0) {
+      m_active[k] = kSelfDeciding;
+      m_changes[k] = 0;  // it may still leave the tool for good (released as any node)
+      ++count;
+    }
+  return count;
+}
+
 StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
                                      double pressureTolerance, double penetrationTolerance,
                                      int maxChangesPerNode, int* unsettled, double* runnerUp,
@@ -158,23 +186,12 @@ StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::ve
   if (unsettled) *unsettled = 0;
   if (unsettledRatio) *unsettledRatio = 0.0;
   for (int k = 0; k < numNodes(); ++k) {
-    double violation = 0.0;
-    if (held(k) || (m_active[k] && m_settings.neverReleased)) continue;  // no status change
-    if (m_active[k]) {
-      violation = -p[k] - pressureTolerance;  // tension beyond the tolerance
-    } else if (gap(k) > 1e-9 * m_curve.arcLength.back()) {
-      continue;  // off the tool (a free surface left it): the surface update brings it back
-    } else {
-      const auto& n = m_curve.normals[k];
-      violation = u[k][0] * n[0] + u[k][1] * n[1] - penetrationTolerance;  // moving into the tool
-      for (const auto& other : m_cornerNormals[k])  // convex tool corner: into every half-plane
-        violation = std::min(violation, u[k][0] * other[0] + u[k][1] * other[1] - penetrationTolerance);
-    }
+    const double violation = this->violation(k, p, u, pressureTolerance, penetrationTolerance);
     if (!(violation > 0.0)) continue;
     if (m_changes[k] >= maxChangesPerNode) {
       if (unsettled) ++*unsettled;
       // The tension or penetration over its tolerance (∞ for a zero tolerance).
-      const double tolerance = m_active[k] ? pressureTolerance : penetrationTolerance;
+      const double tolerance = m_active[k] == kActive ? pressureTolerance : penetrationTolerance;
       const double ratio = tolerance > 0.0 ? (violation + tolerance) / tolerance : std::numeric_limits<double>::infinity();
       if (unsettledRatio) *unsettledRatio = std::max(*unsettledRatio, ratio);
       continue;
@@ -185,7 +202,7 @@ StatusChange ContactWall::nextChange(const std::vector<double>& p, const std::ve
     double& second = limit ? secondAtLimit : secondAnywhere;
     if (violation > best.violation) {
       if (best.node >= 0) second = best.violation;
-      best = {k, !m_active[k], violation};
+      best = {k, m_active[k] == kFree, violation};
     } else {
       second = std::max(second, violation);
     }
@@ -244,7 +261,7 @@ void ContactWall::takeStatusesFrom(const ContactWall& other, const std::vector<s
       for (const auto& corner : m_cornerNormals[k])
         active = active && v[0] * corner[0] + v[1] * corner[1] > penetrationTolerance;
     }
-    m_active[k] = active || held(k);
+    m_active[k] = active || held(k) ? kActive : kFree;
   }
   resetChangeCounts();
 }

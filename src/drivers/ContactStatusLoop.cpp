@@ -150,6 +150,20 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
     }
     report.unsettledContacts = 0;
     report.unsettledContactRatio = 0.0;
+    if (d.wall < 0 && d.unsettled > 0 && m_tolerateCycling) {
+      // A separation point inside a segment: the nodes that cycle decide by themselves
+      // (ContactWall::letCyclingNodesDecide), and the state is solved again with them.
+      int deciding = 0;
+      for (size_t w = 0; w < walls.size(); ++w)
+        deciding += walls[w].letCyclingNodesDecide(values[w].p, values[w].u, m_pressureTolerance,
+                                                   m_penetrationTolerance, m_maxPerNode);
+      if (deciding > 0) {
+        log() << "contact: " << deciding << " node(s) that cycle between active and free now decide by themselves "
+              << "(normal force alpha_n max(u.n, 0))\n";
+        converge();
+        continue;
+      }
+    }
     if (d.wall < 0) {
       if (d.unsettled > 0 && m_tolerateCycling) {
         report.unsettledContacts = d.unsettled;

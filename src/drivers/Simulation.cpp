@@ -140,6 +140,7 @@ const SolveReport& Simulation::run() {
       m_report.message = m_freeSurfaceReport.message;
     }
   }
+  if (m_report.converged && !m_freeSurfaces->empty() && m_bcs->releaseHeld(m_mesh)) releaseHeldAndGoOn(solver);
   if (m_report.converged)
     m_functionals = m_responses->evaluate(*m_solution, m_mesh, *m_dofMap, *m_assembler, m_walls);
   m_solveSeconds = secondsSince(start);
@@ -177,9 +178,11 @@ void Simulation::estimateErrors(const std::vector<std::string>& indicatorRespons
 }
 
 void Simulation::startFrom(const Simulation& other, bool decideZoneLimits) {
-  // The other mesh's free surfaces moved: this mesh, as made, takes their shape first (carryShape).
+  // The other mesh's free surfaces moved: this mesh, as made, takes their shape first (carryShape),
+  // and the groups it released after its first loop are released here from the start.
   if (other.m_mesh.coords != other.m_madeCoords)
     moveNodes(carryShape(other.meshAsMade(), other.mesh(), meshAsMade()));
+  if (!other.m_bcs->releasedGroups().empty()) m_bcs->releaseHeld(m_mesh);
   interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap,
               *m_solution);
   m_bcs->imposeOnSolution(*m_solution);
@@ -236,6 +239,32 @@ FreeSurfaceReport Simulation::convergeFreeSurfaces(NonlinearSolver& solver, Vect
   hooks.unsettledContacts = [&] { return unsettled; };
   return FreeSurfaceLoop(*m_freeSurfaces, m_params.sublist("Free Surface"))
       .run(m_mesh, *m_dofMap, m_walls, physics.kernel.geometry, hooks, toleranceScale);
+}
+
+void Simulation::releaseHeldAndGoOn(NonlinearSolver& solver) {
+  log() << "flowform: the groups held until the free surfaces converged are released; the loop goes on\n";
+  m_model->invalidateJacobian();
+  for (ContactWall& wall : m_walls) wall.resetChangeCounts();
+  SolveReport r = solver.resolve(*m_solution, m_physics);
+  if (r.converged && !m_walls.empty()) m_contactChanges += m_statusLoop->run(solver, *m_solution, m_physics, m_walls, r);
+  m_report.newtonIterations += r.newtonIterations;
+  if (!r.converged) {
+    m_report.converged = false;
+    m_report.message = "the flow with the held groups released did not converge: " + r.message;
+    return;
+  }
+  const FreeSurfaceReport held = m_freeSurfaceReport;
+  m_freeSurfaceReport =
+      convergeFreeSurfaces(solver, *m_solution, m_physics, {r.unsettledContacts, r.unsettledContactRatio});
+  m_report.newtonIterations += m_freeSurfaceReport.newtonIterations;
+  m_contactChanges += m_freeSurfaceReport.contactChanges;
+  m_freeSurfaceReport.iterations += held.iterations;
+  m_freeSurfaceReport.newtonIterations += held.newtonIterations;
+  m_freeSurfaceReport.contactChanges += held.contactChanges;
+  if (!m_freeSurfaceReport.converged) {
+    m_report.converged = false;
+    m_report.message = "after the held groups were released: " + m_freeSurfaceReport.message;
+  }
 }
 
 void Simulation::moveNodes(const std::vector<std::array<double, 2>>& coords) {
@@ -371,7 +400,13 @@ void Simulation::writeOutput(const std::string& outDir) const {
   summary["exit_status"] = exitStatus();
   summary["contact_changes"] = m_contactChanges;
   summary["free_surface_iterations"] = 0;
-  if (!m_freeSurfaces->empty()) m_freeSurfaceReport.report(summary);  // and the "free_surface" block
+  if (!m_freeSurfaces->empty()) {
+    m_freeSurfaceReport.report(summary);  // and the "free_surface" block
+    int selfDeciding = 0;
+    for (const ContactWall& wall : m_walls) selfDeciding += wall.selfDecidingNodes();
+    summary["free_surface"]["self_deciding_contacts"] = selfDeciding;
+    summary["free_surface"]["released_groups"] = m_bcs->releasedGroups();
+  }
   summary["dofs"] = m_dofMap->ownedMap()->getGlobalNumElements();
   summary["mesh"] = {{"file", m_mesh.source}, {"nodes", m_mesh.numNodes()}, {"cells", m_mesh.numCells()},
                      {"cell_type", cellTypeName(m_mesh.cellType)}};

@@ -105,6 +105,37 @@ TEUCHOS_UNIT_TEST(ContactWall, FreeNodesAndSegmentsCarryNothing) {
   TEST_EQUALITY_CONST(R[1], 0.0);
 }
 
+TEUCHOS_UNIT_TEST(ContactWall, SelfDecidingNodePushesButNeverPulls) {
+  // Node 1 has cycled (4 changes, active now) and still pulls (p = −1): it decides by itself.
+  ContactWall wall = makeWall("Coulomb", 0.2);
+  for (bool active : {false, true, false, true}) wall.setActive(1, active);
+  const std::vector<double> pull = {1.0, -1.0, 1.0};
+  const std::vector<std::array<double, 2>> resting = {{0.5, 0.0}, {0.5, 0.0}, {0.5, 0.0}};
+  const int deciding = wall.letCyclingNodesDecide(pull, resting, 1e-3, 1e-4, 4);
+  TEST_EQUALITY(deciding, 1);
+  TEST_ASSERT(wall.isSelfDeciding(1) && wall.isActive(1));
+  TEST_EQUALITY(wall.selfDecidingNodes(), 1);
+  // Pressing (u·n = 0.01 with n = (0, −1)): the normal force α_n u·n = 100·2·0.01 = 2, and the
+  // friction is bounded by ν times it (not by the lumped pressure): sliding, g = 0.4 along t = (1, 0).
+  const double p[3] = {1.0, 2.0, 4.0};
+  const double pressing[2] = {0.5, -0.01};
+  double R[2] = {0.0, 0.0};
+  wall.addNodeResidual(1, pressing, p, R);
+  TEST_FLOATING_EQUALITY(R[0], 0.2 * 2.0, 1e-14);
+  TEST_FLOATING_EQUALITY(R[1], -2.0, 1e-14);
+  // Separating (u·n = −0.01): nothing, neither the penalty's pull nor friction.
+  const double separating[2] = {0.5, 0.01};
+  double S[2] = {0.0, 0.0};
+  wall.addNodeResidual(1, separating, p, S);
+  TEST_EQUALITY_CONST(S[0], 0.0);
+  TEST_EQUALITY_CONST(S[1], 0.0);
+  // Leaving the tool beyond the penetration tolerance, it is released like any node.
+  const std::vector<std::array<double, 2>> leaving = {{0.5, 0.0}, {0.5, 0.01}, {0.5, 0.0}};
+  const StatusChange change = wall.nextChange(pull, leaving, 1e-3, 1e-4, 4);
+  TEST_EQUALITY(change.node, 1);
+  TEST_ASSERT(!change.activate);
+}
+
 TEUCHOS_UNIT_TEST(ContactWall, AxisymmetricWeightIsTwoPiR) {
   // Same wall, axisymmetric: f̂ = ν Σ ∫ N_k p W ds with W = 2π r; r = x here.
   const ContactWall wall = makeWall("Coulomb", 0.2, 0.0, Geometry::Axisymmetric);

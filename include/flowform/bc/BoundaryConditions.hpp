@@ -82,6 +82,12 @@ class BoundaryConditions {
   /// straight.
   void refreshGeometry(const Mesh& mesh);
 
+  /// Releases the groups marked "Release After Free Surfaces" (they become traction-free, their
+  /// tractions kept); false when there are none.
+  bool releaseHeld(const Mesh& mesh);
+  /// The groups releaseHeld released (empty before).
+  const std::vector<std::string>& releasedGroups() const { return m_released; }
+
   /// Sets the constrained components of an owned solution vector so that a·u = b holds
   /// (the initial guess then satisfies every constraint, and Newton keeps it so).
   /// `homogeneous`: the constraints with zero data (a·u = 0, u = 0), for test-space vectors.
@@ -97,6 +103,7 @@ class BoundaryConditions {
   /// The normals of the groups named by Parallel To, taken from the mesh as first built: a tool
   /// face is rigid, while free-surface updates may move its released nodes off it.
   std::map<std::string, std::array<double, 2>> m_faceNormals;
+  std::vector<std::string> m_released;
 };
 
 }  // namespace flowform

@@ -96,11 +96,27 @@ class ContactWall {
   /// Consecutive wall nodes, which the friction law couples (for the DofMap).
   std::vector<std::array<GO, 2>> couplings() const;
 
-  bool isActive(int k) const { return m_active[k] != 0; }
+  bool isActive(int k) const { return m_active[k] != kFree; }
   /// Changes the status of node k and counts the change.
   void setActive(int k, bool active) {
-    m_active[k] = active;
+    m_active[k] = active ? kActive : kFree;
     ++m_changes[k];
+  }
+  /// A node that cycles between active and free at a separation point (the point lies inside a
+  /// segment: active it pulls, free it moves into the tool) decides by itself: its normal force
+  /// is α_n max(u·n, 0) (no tension, no penetration beyond what the penalty allows), its friction
+  /// is bounded by that force (a Tresca or Orowan node slides freely when it separates), and it
+  /// counts as active. Only walls whose released nodes are a free surface use it (ContactStatusLoop).
+  bool isSelfDeciding(int k) const { return m_active[k] == kSelfDeciding; }
+  /// Lets every node that has changed `maxChangesPerNode` times and still violates its
+  /// criterion decide by itself; returns how many now do. A self-deciding node that leaves
+  /// the tool (u·n < −penetration tolerance) is released as any node is.
+  int letCyclingNodesDecide(const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
+                            double pressureTolerance, double penetrationTolerance, int maxChangesPerNode);
+  int selfDecidingNodes() const {
+    int count = 0;
+    for (char a : m_active) count += a == kSelfDeciding;
+    return count;
   }
   int changes(int k) const { return m_changes[k]; }
   /// Forgets the change counts (a new solve from this state, e.g. a finite-difference run,
@@ -118,7 +134,7 @@ class ContactWall {
   /// With Convex Corners = Closed the node is held instead: active, and never released.
   void addCornerNormal(int k, const std::array<double, 2>& otherNormal) {
     m_cornerNormals[k].push_back(otherNormal);
-    if (m_settings.closedCorners) m_active[k] = 1;
+    if (m_settings.closedCorners) m_active[k] = kActive;
   }
   /// Whether node k is held active (no status change): at a closed convex corner, or, on a wall
   /// whose released nodes are a free surface, its upstream end when no other wall meets it there
@@ -214,6 +230,11 @@ class ContactWall {
                           double* unsettledRatio = nullptr) const;
 
  private:
+  /// How far node k violates the criterion of its status (> 0: it should change; −∞: it
+  /// cannot change): tension beyond the pressure tolerance (active), motion into the tool
+  /// beyond the penetration tolerance (free), motion away from it (self-deciding).
+  double violation(int k, const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
+                   double pressureTolerance, double penetrationTolerance) const;
   /// P_k, S_k and A_k of node k, each only when the law needs it (FrictionLaw.hpp).
   template <typename Scalar>
   void lumpSegmentIntegrals(int k, const Scalar* p, FrictionNodeData<Scalar>& d) const;
@@ -222,7 +243,8 @@ class ContactWall {
   BoundaryCurve m_curve;
   ContactWallSettings m_settings;
   Geometry m_geometry;
-  std::vector<char> m_active;
+  static constexpr char kFree = 0, kActive = 1, kSelfDeciding = 2;
+  std::vector<char> m_active;  ///< kFree, kActive or kSelfDeciding per node
   std::vector<int> m_changes;
   std::vector<std::vector<std::array<double, 2>>> m_cornerNormals;
   int m_upstreamEnd = -1;  ///< Released Nodes = Free Surface: the wall node shared with the Start Group
@@ -267,15 +289,16 @@ void ContactWall::lumpSegmentIntegrals(int k, const Scalar* p, FrictionNodeData<
 template <typename Scalar, typename PScalar>
 Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
                                     FrictionBranch* branch, FrictionDualPoint* dual) const {
-  if (!m_active[k]) {
+  const auto& n = m_curve.normals[k];
+  const bool separating = m_active[k] == kSelfDeciding && !(n[0] * u[0] + n[1] * u[1] > 0.0);
+  if (m_active[k] == kFree || separating) {
     if (branch) *branch = FrictionBranch::Free;
     return Scalar(0.0);
   }
-  const auto& n = m_curve.normals[k];
   FrictionNodeData<Scalar> d{-n[1] * u[0] + n[0] * u[1],  // u·t, t = (−n_y, n_x)
                              Scalar(0.0), 0.0, 0.0, m_settings.tangentialPenalty * m_viscosity[k] * weight(k), dual};
   lumpSegmentIntegrals(k, p, d);
-  if (m_settings.coulombOnContactForce) {
+  if (m_settings.coulombOnContactForce || m_active[k] == kSelfDeciding) {
     // N_k = max(α_n u·n, 0): the penalty's normal force on the node (its normal traction, lumped).
     const Scalar normalForce = m_settings.normalPenalty * m_viscosity[k] * weight(k) * (n[0] * u[0] + n[1] * u[1]);
     d.pressureIntegral = normalForce > 0.0 ? normalForce : Scalar(0.0);
@@ -288,10 +311,11 @@ Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp
 template <typename Scalar, typename PScalar>
 void ContactWall::addNodeResidual(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
                                   Scalar* R, FrictionDualPoint* dual) const {
-  if (!m_active[k]) return;
+  if (m_active[k] == kFree) return;
   const auto& n = m_curve.normals[k];
   const double alphaN = m_settings.normalPenalty * m_viscosity[k] * weight(k);
-  const Scalar un = n[0] * u[0] + n[1] * u[1];
+  Scalar un = n[0] * u[0] + n[1] * u[1];
+  if (m_active[k] == kSelfDeciding && !(un > 0.0)) un = Scalar(0.0);  // α_n max(u·n, 0)
   R[0] += alphaN * un * n[0];
   R[1] += alphaN * un * n[1];
   const Scalar g = tangentialForce(k, fp, u, p, nullptr, dual);

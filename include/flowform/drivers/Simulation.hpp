@@ -125,6 +125,9 @@ class Simulation {
   /// A Newton solver on the case's Solver sublist; `refreshScales` makes the walls take their
   /// penalty scales from the state before every Newton solve.
   NonlinearSolver newtonSolver(bool refreshScales);
+  /// The groups marked Release After Free Surfaces are released (BoundaryConditions::releaseHeld):
+  /// the flow is re-solved and the free-surface loop goes on from the converged shape.
+  void releaseHeldAndGoOn(NonlinearSolver& solver);
   /// The free-surface loop from the converged flow at `physics` (x, the walls and the mesh move);
   /// the re-solves use `solver`.
   /// `unsettledAtStart`: contact nodes the solve before it left cycling (SolveReport::unsettledContacts).
