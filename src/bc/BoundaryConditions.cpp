@@ -157,6 +157,9 @@ void BoundaryConditions::build(const Mesh& mesh) {
     }
     const std::string type = group.get<std::string>("Type", "Traction");
     const BoundaryGroup& bg = mesh.boundary(name);
+    if (group.get<bool>("Release After Free Surfaces", false) && type != "Velocity")
+      throw InputError("Boundary Conditions/" + name + ": 'Release After Free Surfaces' releases a Velocity "
+                       "condition, and the group's Type is " + type);
 
     if (type == "Velocity") {
       const bool hasX = group.isParameter("Velocity X"), hasY = group.isParameter("Velocity Y");

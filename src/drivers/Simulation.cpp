@@ -79,9 +79,17 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
       *m_assembler, createLinearSolver(m_params.sublist("Solver").sublist("Linear Solver"), *comm));
   m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
   // A wall whose released nodes are a free surface: its separation point may cycle until the
-  // surface has settled; the free-surface loop decides (it does not converge while any cycle).
+  // surface has settled; a node that still cycles then decides by itself (ContactWall), and the
+  // free-surface loop does not converge while any other cycles.
   for (const ContactWall& wall : m_walls) if (wall.releasedFreeSurface()) m_statusLoop->tolerateCycling(true);
   m_freeSurfaces = std::make_unique<FreeSurfaces>(bcList, m_mesh, m_walls);
+  if (m_freeSurfaces->empty())
+    for (auto it = bcList.begin(); it != bcList.end(); ++it)
+      if (bcList.isSublist(bcList.name(it)) &&
+          bcList.sublist(bcList.name(it)).isType<bool>("Release After Free Surfaces") &&
+          bcList.sublist(bcList.name(it)).get<bool>("Release After Free Surfaces"))
+        throw InputError("Boundary Conditions/" + bcList.name(it) +
+                         ": 'Release After Free Surfaces' needs free surfaces, and the case has none");
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
   m_setupSeconds = secondsSince(start);

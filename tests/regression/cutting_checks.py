@@ -46,7 +46,8 @@ usage: cutting_checks.py FLOWFORM SOURCE_DIR WORKDIR
    converges (measured 18 updates, against 39 + 29).
 5. Bad input exits 2 and writes nothing: a Contact Length or a Wall Force on a group that is not a
    contact wall, a Thickness Ratio with a Reference Thickness <= 0.
-   A Parallel To naming no group, or a curved one, exits 2 as well.
+   A Parallel To naming no group, or a curved one, exits 2 as well, and so does Release After
+   Free Surfaces on a group that is not a Velocity group or in a case without free surfaces.
 6. scripts/plot_cutting.py draws run 1 (mesh, fields, |du/dν| DDM beside FD): exit 0, three PNGs
    of more than 10 kB.
 """
@@ -184,14 +185,23 @@ def main():
         failed += checks.check(refined is not None and estimate is not None,
                                f"free chip: t/t_c = {f['chip_ratio']:.4f} +- {estimate}, refined loop {refined} updates")
 
-    for name, sets in (("contact_length_not_a_wall", ["Responses/l/Type=Contact Length", "Responses/l/Boundary=far"]),
-                       ("wall_force_not_a_wall", ["Responses/w/Type=Wall Force", "Responses/w/Boundary=machined"]),
-                       ("reference_thickness", ["Responses/chip_ratio/Reference Thickness=0"]),
-                       ("parallel_to_nothing", ["Boundary Conditions/chip_outlet/Parallel To=tool"]),
-                       ("parallel_to_curved", ["Boundary Conditions/chip_outlet/Parallel To=far"])):
+    # Each bad input with a word its message must carry (the error is the one meant, not another).
+    for name, says, sets in (
+            ("contact_length_not_a_wall", "far", ["Responses/l/Type=Contact Length", "Responses/l/Boundary=far"]),
+            ("wall_force_not_a_wall", "machined", ["Responses/w/Type=Wall Force", "Responses/w/Boundary=machined"]),
+            ("reference_thickness", "Reference Thickness", ["Responses/chip_ratio/Reference Thickness=0"]),
+            ("parallel_to_nothing", "'tool'", ["Boundary Conditions/chip_outlet/Parallel To=tool"]),
+            ("parallel_to_curved", "straight", ["Boundary Conditions/chip_outlet/Parallel To=far"]),
+            ("release_not_velocity", "releases a Velocity",
+             ["Boundary Conditions/machined/Release After Free Surfaces=true"]),
+            ("release_without_free_surfaces", "needs free surfaces",  # the extrusion has none
+             ["Boundary Conditions/ram/Release After Free Surfaces=true"])):
+        bad_case = os.path.join(source, "xml/extrusion.xml") if name == "release_without_free_surfaces" else case
         out = os.path.join(work, f"bad_{name}")
-        run = launcher.run(flowform, case, out, sets, quiet=True, clean=True)
-        failed += checks.check(run.status == 2 and not os.path.exists(out), f"bad input {name}: exit {run.status}")
+        run = launcher.run(flowform, bad_case, out, sets, quiet=True, clean=True, capture=True)
+        message = (run.stderr or "") + (run.stdout or "")
+        failed += checks.check(run.status == 2 and not os.path.exists(out) and says in message,
+                               f"bad input {name}: exit {run.status}, says {says!r}: {message.strip()[-160:]}")
 
     plots = os.path.join(work, "plots")
     run = launcher.run_command([sys.executable, os.path.join(source, "scripts/plot_cutting.py"), run1, "--out", plots],
