@@ -207,7 +207,6 @@ bool FreeSurfaces::arcLengthStep(const Surface& s, const Mesh& mesh,
   const size_t n = s.nodes.size();
   std::vector<Point> x(n), xNew(n), direction(n - 1);
   for (size_t k = 0; k < n; ++k) x[k] = mesh.coords[s.nodes[k]];
-  xNew[0] = x[0];
   for (size_t k = 0; k + 1 < n; ++k) {
     const Point mean = segmentVelocity(x[k], x[k + 1], velocity(s.nodes[k]), velocity(s.nodes[k + 1]), geometry);
     const double speed = std::hypot(mean[0], mean[1]);
@@ -218,26 +217,27 @@ bool FreeSurfaces::arcLengthStep(const Surface& s, const Mesh& mesh,
     }
     out.noteFlowAngle(flowAngle(x[k], x[k + 1], mean), x[k], x[k + 1]);
     direction[k] = {mean[0] / speed, mean[1] / speed};
-    xNew[k + 1] = {xNew[k][0] + s.segmentLength[k] * direction[k][0], xNew[k][1] + s.segmentLength[k] * direction[k][1]};
   }
   // ... then, with a straight group at the end, every length scaled by the one λ that puts the
   // last node on that group's line g(x) = (x − p)·ν = 0 (as made): x_{n−1} = x_0 + λ Σ L_k d_k,
-  // so λ = −g(x_0) / (Σ L_k d_k · ν), which must be positive.
+  // so λ = −g(x_0) / (Σ L_k d_k · ν), which must be positive (λ = 1 without such a group).
+  double scale = 1.0;
   if (s.endOnLine) {
     Point reach{0.0, 0.0};
     for (size_t k = 0; k + 1 < n; ++k)
       reach = {reach[0] + s.segmentLength[k] * direction[k][0], reach[1] + s.segmentLength[k] * direction[k][1]};
     const double towards = dot(reach, s.endLineNormal), start = dot(minus(x[0], s.endLinePoint), s.endLineNormal);
-    const double scale = towards > 0.0 ? -start / towards : -1.0;
+    scale = towards > 0.0 ? -start / towards : -1.0;
     if (!(scale > 0.0)) {
       out.failure = "free surface '" + s.name + "' does not reach the line of the group at its end: the flow along it "
                     "runs along or away from that line";
       return false;
     }
-    for (size_t k = 0; k + 1 < n; ++k)
-      xNew[k + 1] = {xNew[k][0] + scale * s.segmentLength[k] * direction[k][0],
-                     xNew[k][1] + scale * s.segmentLength[k] * direction[k][1]};
   }
+  xNew[0] = x[0];
+  for (size_t k = 0; k + 1 < n; ++k)
+    xNew[k + 1] = {xNew[k][0] + scale * s.segmentLength[k] * direction[k][0],
+                   xNew[k][1] + scale * s.segmentLength[k] * direction[k][1]};
   const size_t first = out.moves.size();
   for (size_t k = 0; k < n; ++k) {
     const Point r = minus(xNew[k], x[k]);
