@@ -112,23 +112,18 @@ BoundaryConditions::BoundaryConditions(const Teuchos::ParameterList& bcList, con
 void BoundaryConditions::refreshGeometry(const Mesh& mesh) { build(mesh); }
 
 bool BoundaryConditions::releaseHeld(const Mesh& mesh) {
-  bool released = false;
-  for (auto it = m_bcList.begin(); it != m_bcList.end(); ++it) {
-    const std::string& name = m_bcList.name(it);
-    if (!m_bcList.isSublist(name)) continue;
+  if (m_held.empty()) return false;
+  for (const std::string& name : m_held) {
     Teuchos::ParameterList& group = m_bcList.sublist(name);
-    if (!group.isType<bool>("Release After Free Surfaces") || !group.get<bool>("Release After Free Surfaces"))
-      continue;
     Teuchos::ParameterList free(name);
     free.set("Type", "Traction");
     for (const char* key : {"Traction X", "Traction Y"})
       if (group.isParameter(key)) free.set(key, group.get<double>(key));
     group = free;
     m_released.push_back(name);
-    released = true;
   }
-  if (released) build(mesh);
-  return released;
+  build(mesh);  // the released groups no longer hold: m_held empties
+  return true;
 }
 
 void BoundaryConditions::build(const Mesh& mesh) {
@@ -136,6 +131,7 @@ void BoundaryConditions::build(const Mesh& mesh) {
   const DofMap& dofMap = m_dofMap;
   m_constraints.clear();
   m_tractionEdges.clear();
+  m_held.clear();
   std::vector<std::vector<LinearCondition>> conditions(mesh.numNodes());
   std::vector<std::pair<const BoundaryGroup*, std::array<double, 2>>> tractionGroups;
 
@@ -157,9 +153,12 @@ void BoundaryConditions::build(const Mesh& mesh) {
     }
     const std::string type = group.get<std::string>("Type", "Traction");
     const BoundaryGroup& bg = mesh.boundary(name);
-    if (group.get<bool>("Release After Free Surfaces", false) && type != "Velocity")
-      throw InputError("Boundary Conditions/" + name + ": 'Release After Free Surfaces' releases a Velocity "
-                       "condition, and the group's Type is " + type);
+    if (group.get<bool>("Release After Free Surfaces", false)) {
+      if (type != "Velocity")
+        throw InputError("Boundary Conditions/" + name + ": 'Release After Free Surfaces' releases a Velocity "
+                         "condition, and the group's Type is " + type);
+      m_held.push_back(name);
+    }
 
     if (type == "Velocity") {
       const bool hasX = group.isParameter("Velocity X"), hasY = group.isParameter("Velocity Y");

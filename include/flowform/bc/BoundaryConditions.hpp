@@ -85,6 +85,8 @@ class BoundaryConditions {
   /// Releases the groups marked "Release After Free Surfaces" (they become traction-free, their
   /// tractions kept); false when there are none.
   bool releaseHeld(const Mesh& mesh);
+  /// The groups marked "Release After Free Surfaces" and not yet released.
+  const std::vector<std::string>& heldGroups() const { return m_held; }
   /// The groups releaseHeld released (empty before).
   const std::vector<std::string>& releasedGroups() const { return m_released; }
 
@@ -103,7 +105,7 @@ class BoundaryConditions {
   /// The normals of the groups named by Parallel To, taken from the mesh as first built: a tool
   /// face is rigid, while free-surface updates may move its released nodes off it.
   std::map<std::string, std::array<double, 2>> m_faceNormals;
-  std::vector<std::string> m_released;
+  std::vector<std::string> m_held, m_released;
 };
 
 }  // namespace flowform
