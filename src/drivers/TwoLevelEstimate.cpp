@@ -95,18 +95,21 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
     if (it != estimate.refinedFunctionals.end()) estimate.functionals[name] = factor * (it->second - value);
   }
   if (!fine.freeSurfaces().empty()) estimate.refinedSurfaceUpdates = fine.freeSurfaceReport().iterations;
+  // η of each derivative (response → parameter), from the coarse and the refined values.
+  using Derivatives = std::map<std::string, std::map<std::string, double>>;
+  auto estimateDerivatives = [&](const Derivatives& coarseValues, Derivatives& refined, Derivatives& eta) {
+    for (const auto& [name, byParameter] : coarseValues)
+      for (const auto& [parameter, value] : byParameter) eta[name][parameter] = factor * (refined[name][parameter] - value);
+  };
   if (coarse.shapeDerivative().computed && fine.shapeDerivative().computed) {
     estimate.refinedSensitivitiesTotalShape = fine.shapeDerivative().responses;
-    for (const auto& [name, byParameter] : coarse.shapeDerivative().responses)
-      for (const auto& [parameter, value] : byParameter)
-        estimate.sensitivitiesTotalShape[name][parameter] =
-            factor * (estimate.refinedSensitivitiesTotalShape[name][parameter] - value);
+    estimateDerivatives(coarse.shapeDerivative().responses, estimate.refinedSensitivitiesTotalShape,
+                        estimate.sensitivitiesTotalShape);
   }
   if (coarse.sensitivity().computed() && fine.sensitivity().computed()) {
     estimate.refinedSensitivities = fine.sensitivity().responseDerivatives();
-    for (const auto& [name, byParameter] : coarse.sensitivity().responseDerivatives())
-      for (const auto& [parameter, value] : byParameter)
-        estimate.sensitivities[name][parameter] = factor * (estimate.refinedSensitivities[name][parameter] - value);
+    estimateDerivatives(coarse.sensitivity().responseDerivatives(), estimate.refinedSensitivities,
+                        estimate.sensitivities);
   }
   estimate.estimated = true;
   estimate.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
