@@ -103,9 +103,10 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     }
     report.flowAngle = step.maxFlowAngle;
     report.move = step.maxMove;
-    const auto [unsettled, unsettledRatio] = hooks.unsettledContacts ? hooks.unsettledContacts()
-                                                                       : std::pair<int, double>{0, 0.0};
-    const bool settled = unsettled == 0 || unsettledRatio <= kGrazing;
+    const std::pair<int, double> cycling = hooks.unsettledContacts ? hooks.unsettledContacts()
+                                                                     : std::pair<int, double>{0, 0.0};
+    const auto [unsettled, unsettledRatio] = cycling;
+    const bool settled = FreeSurfaceLoop::settled(cycling);
     log() << "flowform: free surface " << report.iterations << ": max |u.n|/|u| = " << step.maxFlowAngle << " at ("
           << step.worstSegment[0] << ", " << step.worstSegment[1] << ")"
           << ", next move " << step.maxMove << " at (" << step.largestMoveAt[0] << ", " << step.largestMoveAt[1] << ")" << (step.clampedToTool ? ", " + std::to_string(step.clampedToTool) +

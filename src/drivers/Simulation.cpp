@@ -83,13 +83,9 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   // free-surface loop does not converge while any other cycles.
   for (const ContactWall& wall : m_walls) if (wall.releasedFreeSurface()) m_statusLoop->tolerateCycling(true);
   m_freeSurfaces = std::make_unique<FreeSurfaces>(bcList, m_mesh, m_walls);
-  if (m_freeSurfaces->empty())
-    for (auto it = bcList.begin(); it != bcList.end(); ++it)
-      if (bcList.isSublist(bcList.name(it)) &&
-          bcList.sublist(bcList.name(it)).isType<bool>("Release After Free Surfaces") &&
-          bcList.sublist(bcList.name(it)).get<bool>("Release After Free Surfaces"))
-        throw InputError("Boundary Conditions/" + bcList.name(it) +
-                         ": 'Release After Free Surfaces' needs free surfaces, and the case has none");
+  if (m_freeSurfaces->empty() && !m_bcs->heldGroups().empty())
+    throw InputError("Boundary Conditions/" + m_bcs->heldGroups().front() +
+                     ": 'Release After Free Surfaces' needs free surfaces, and the case has none");
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
   m_setupSeconds = secondsSince(start);
@@ -139,16 +135,10 @@ const SolveReport& Simulation::run() {
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged && !m_freeSurfaces->empty()) {
-    m_freeSurfaceReport = convergeFreeSurfaces(solver, *m_solution, m_physics,
-                                               {m_report.unsettledContacts, m_report.unsettledContactRatio});
-    m_report.newtonIterations += m_freeSurfaceReport.newtonIterations;
-    m_contactChanges += m_freeSurfaceReport.contactChanges;
-    if (!m_freeSurfaceReport.converged) {
-      m_report.converged = false;
-      m_report.message = m_freeSurfaceReport.message;
-    }
+    m_freeSurfaceReport = FreeSurfaceReport{};
+    loopFreeSurfaces(solver, {m_report.unsettledContacts, m_report.unsettledContactRatio}, "");
+    if (m_report.converged && m_bcs->releaseHeld(m_mesh)) releaseHeldAndGoOn(solver);
   }
-  if (m_report.converged && !m_freeSurfaces->empty() && m_bcs->releaseHeld(m_mesh)) releaseHeldAndGoOn(solver);
   if (m_report.converged)
     m_functionals = m_responses->evaluate(*m_solution, m_mesh, *m_dofMap, *m_assembler, m_walls);
   m_solveSeconds = secondsSince(start);
@@ -261,17 +251,21 @@ void Simulation::releaseHeldAndGoOn(NonlinearSolver& solver) {
     m_report.message = "the flow with the held groups released did not converge: " + r.message;
     return;
   }
-  const FreeSurfaceReport held = m_freeSurfaceReport;
-  m_freeSurfaceReport =
-      convergeFreeSurfaces(solver, *m_solution, m_physics, {r.unsettledContacts, r.unsettledContactRatio});
+  loopFreeSurfaces(solver, {r.unsettledContacts, r.unsettledContactRatio}, "after the held groups were released: ");
+}
+
+void Simulation::loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart,
+                                  const std::string& context) {
+  const FreeSurfaceReport earlier = m_freeSurfaceReport;  // a loop before this one in the run, or none
+  m_freeSurfaceReport = convergeFreeSurfaces(solver, *m_solution, m_physics, unsettledAtStart);
   m_report.newtonIterations += m_freeSurfaceReport.newtonIterations;
   m_contactChanges += m_freeSurfaceReport.contactChanges;
-  m_freeSurfaceReport.iterations += held.iterations;
-  m_freeSurfaceReport.newtonIterations += held.newtonIterations;
-  m_freeSurfaceReport.contactChanges += held.contactChanges;
+  m_freeSurfaceReport.iterations += earlier.iterations;
+  m_freeSurfaceReport.newtonIterations += earlier.newtonIterations;
+  m_freeSurfaceReport.contactChanges += earlier.contactChanges;
   if (!m_freeSurfaceReport.converged) {
     m_report.converged = false;
-    m_report.message = "after the held groups were released: " + m_freeSurfaceReport.message;
+    m_report.message = context + m_freeSurfaceReport.message;
   }
 }
 
@@ -332,7 +326,7 @@ PerturbedRun Simulation::solvePerturbed(const SensitivityParameter& h, double de
   if (report.converged && !m_walls.empty()) run.contactChanges = m_statusLoop->run(solver, *x, physics, m_walls, report);
   // Nodes left cycling (a wall whose released nodes are free surfaces) are accepted when they only
   // graze the tool, as in the free-surface loop.
-  const bool cycling = report.unsettledContacts > 0 && report.unsettledContactRatio > FreeSurfaceLoop::kGrazing;
+  const bool cycling = !FreeSurfaceLoop::settled({report.unsettledContacts, report.unsettledContactRatio});
   run.converged = report.converged && !cycling;
   run.message = cycling ? std::to_string(report.unsettledContacts) + " contact node(s) cycle on the frozen shape"
                         : report.message;

@@ -74,6 +74,11 @@ class FreeSurfaceLoop {
   /// A contact node left cycling whose tension or penetration is within this many times the
   /// status tolerances only grazes the tool: a converged state may keep it (Hooks::unsettledContacts).
   static constexpr double kGrazing = 30.0;
+  /// Whether the contact nodes left cycling ({count, largest violation over its tolerance}) may
+  /// stay in a converged state: none, or all only grazing.
+  static bool settled(std::pair<int, double> unsettled) {
+    return unsettled.first == 0 || unsettled.second <= kGrazing;
+  }
 
   /// `settings` is the validated "Free Surface" sublist.
   FreeSurfaceLoop(const FreeSurfaces& surfaces, const Teuchos::ParameterList& settings);
