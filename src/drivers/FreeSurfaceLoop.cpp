@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
+#include "flowform/solvers/AndersonAcceleration.hpp"
 
 namespace flowform {
 
@@ -22,11 +24,15 @@ Teuchos::RCP<const Teuchos::ParameterList> FreeSurfaceLoop::validParameters() {
              "converged when max |u·n|/|u| over the surface segments (u the segment's mean velocity) is below this",
              Teuchos::rcp(new EnhancedNumberValidator<double>(1e-14, 1.0)));
   Teuchos::setStringToIntegralParameter<int>(
-      "Relaxation", "Aitken",
+      "Relaxation", "Anderson",
       "None: every update moves the surface nodes onto the streamline of the current flow (the paper's); Aitken: "
-      "they move by ω times that, ω from Aitken's Δ² rule on successive updates; Newton: a Newton step on the "
-      "positions with the linearized update (two residual assemblies per surface node per update; docs/theory.md §3)",
-      Teuchos::tuple<std::string>("None", "Aitken", "Newton"), valid.get());
+      "they move by ω times that, ω from Aitken's Δ² rule on successive updates; Anderson: the multisecant step "
+      "from the last Anderson Depth updates (the plain one after a contact status change); Newton: a Newton step "
+      "on the positions with the linearized update (two residual assemblies per surface node per update; "
+      "docs/theory.md §3)",
+      Teuchos::tuple<std::string>("None", "Aitken", "Anderson", "Newton"), valid.get());
+  valid->set("Anderson Depth", 5, "Relaxation = Anderson: how many previous updates its step uses",
+             Teuchos::rcp(new EnhancedNumberValidator<int>(1, 50)));
   valid->set("Move Tolerance", 1e-4,
              "and when the largest node move of the next update is below this fraction of the surface's length",
              Teuchos::rcp(new EnhancedNumberValidator<double>(1e-14, 1.0)));
@@ -49,9 +55,11 @@ FreeSurfaceLoop::FreeSurfaceLoop(const FreeSurfaces& surfaces, const Teuchos::Pa
       m_maxIterations(settings.get<int>("Maximum Iterations")),
       m_angleTolerance(settings.get<double>("Flow Angle Tolerance")),
       m_moveTolerance(settings.get<double>("Move Tolerance")),
-      m_relaxation(settings.get<std::string>("Relaxation") == "Aitken"   ? Relaxation::Aitken
-                   : settings.get<std::string>("Relaxation") == "Newton" ? Relaxation::Newton
-                                                                         : Relaxation::None) {}
+      m_andersonDepth(settings.get<int>("Anderson Depth")),
+      m_relaxation(settings.get<std::string>("Relaxation") == "Aitken"     ? Relaxation::Aitken
+                   : settings.get<std::string>("Relaxation") == "Anderson" ? Relaxation::Anderson
+                   : settings.get<std::string>("Relaxation") == "Newton"   ? Relaxation::Newton
+                                                                           : Relaxation::None) {}
 
 FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, const std::vector<ContactWall>& walls,
                                        Geometry geometry, const Hooks& hooks, double toleranceScale) const {
@@ -65,9 +73,11 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
   // Aitken's Δ² relaxation (Irons–Tuck form): with r_k the plain update's residual,
   //   ω_k = −ω_{k−1} r_{k−1}·(r_k − r_{k−1}) / |r_k − r_{k−1}|²,
   // clamped to [kMinRelaxation, kMaxRelaxation]; reset to 1 when the surfaces' node sets change
-  // (a contact status changed the runs).
+  // (a contact status changed the runs). Relaxation = Anderson uses ω as its mixing.
   double relaxation = 1.0;
   std::vector<double> previousResidual;
+  AndersonAcceleration anderson(m_andersonDepth);
+  bool restartAnderson = false;  // the last re-solve changed a contact status, or its move was halved
   for (;;) {
     auto t = Clock::now();
     FreeSurfaceStep step = m_surfaces.step(mesh, dofMap, hooks.velocities(), walls, geometry, moveLimit);
@@ -76,7 +86,7 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
       break;
     }
     report.motionSeconds += since(t);
-    if (m_relaxation == Relaxation::Aitken) {
+    if (m_relaxation == Relaxation::Aitken || m_relaxation == Relaxation::Anderson) {
       if (previousResidual.size() == step.residual.size() && step.released.empty()) {
         double num = 0.0, den = 0.0;
         for (size_t i = 0; i < step.residual.size(); ++i) {
@@ -91,6 +101,9 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
       previousResidual = step.residual;
     }
     step.relax(relaxation);
+    double stepGain = relaxation;  // the step over the plain update: ω, or Anderson's
+    if (m_relaxation == Relaxation::Anderson)
+      stepGain = andersonStep(mesh, step, anderson, restartAnderson, relaxation);
     std::string newtonFailure;
     if (m_relaxation == Relaxation::Newton && !(step.maxFlowAngle <= angleLimit && step.maxMove <= moveLimit)) {
       // With a status change pending (released nodes) the linearization's unknowns differ: plain.
@@ -162,7 +175,8 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     report.resolveSeconds += since(t);
     report.newtonIterations += newton;
     report.contactChanges += changes;
-    report.history.push_back({{"flow_angle", step.maxFlowAngle}, {"move", step.maxMove}, {"relaxation", relaxation},
+    restartAnderson = changes > 0 || halvings > 0;
+    report.history.push_back({{"flow_angle", step.maxFlowAngle}, {"move", step.maxMove}, {"relaxation", stepGain},
                               {"clamped_to_tool", step.clampedToTool}, {"released", step.released.size()},
                               {"halvings", halvings}, {"newton_iterations", newton},
                               {"contact_changes", changes}});
@@ -179,6 +193,48 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
   else
     log() << "flowform: FREE SURFACES NOT CONVERGED: " << report.message << "\n";
   return report;
+}
+
+double FreeSurfaceLoop::andersonStep(const Mesh& mesh, FreeSurfaceStep& step, AndersonAcceleration& anderson,
+                                     bool restart, double omega) const {
+  // The unknowns: every move's node position along its directions (the residual's layout).
+  std::vector<double> x, f = step.residual;
+  std::vector<std::array<double, 2>> directions;
+  for (const FreeSurfaceStep::Move& m : step.moves)
+    for (const auto& d : m.directions()) {
+      const auto& p = mesh.coords[m.node];
+      x.push_back(p[0] * d[0] + p[1] * d[1]);
+      directions.push_back(d);
+    }
+  // A status change alters the map (released nodes, a re-solve that changed statuses) and a halved
+  // move did not go where the step said: the history no longer describes it.
+  if (restart || !step.released.empty() || x.size() != f.size()) anderson.reset();
+  if (x.size() != f.size()) return omega;  // (the plain update, as relaxed already)
+  // The mixing β is Aitken's ω of this update: the plain step relaxed as Aitken would (an overshooting
+  // mode, as at a refined chip's corner, damped), the history removing the slow modes.
+  std::vector<double> dx = anderson.step(x, f, omega);
+  // Safeguard: a step more than kMaxAndersonGain times the plain one is not trusted (a history
+  // from a different regime): the plain update, and the history starts again.
+  double fMax = 0.0, dxMax = 0.0;
+  for (size_t i = 0; i < f.size(); ++i) {
+    fMax = std::max(fMax, std::abs(f[i]));
+    dxMax = std::max(dxMax, std::abs(dx[i]));
+  }
+  if (!(dxMax <= kMaxAndersonGain * fMax)) {
+    anderson.reset();
+    dx = anderson.step(x, f, omega);
+    dxMax = omega * fMax;
+  }
+  const double gain = fMax > 0.0 ? dxMax / fMax : 1.0;
+  std::vector<std::array<double, 2>> perMove(step.moves.size(), {0.0, 0.0});
+  size_t i = 0;
+  for (size_t k = 0; k < step.moves.size(); ++k)
+    for (size_t c = 0; c < step.moves[k].directions().size(); ++c, ++i) {
+      perMove[k][0] += dx[i] * directions[i][0];
+      perMove[k][1] += dx[i] * directions[i][1];
+    }
+  step.setMoves(perMove);
+  return gain;
 }
 
 }  // namespace flowform

@@ -24,6 +24,8 @@
 
 namespace flowform {
 
+class AndersonAcceleration;
+
 struct FreeSurfaceReport {
   bool converged = false;
   int iterations = 0;          ///< surface updates made (each followed by a flow re-solve)
@@ -90,12 +92,20 @@ class FreeSurfaceLoop {
                         Geometry geometry, const Hooks& hooks, double toleranceScale = 1.0) const;
 
  private:
+  /// Relaxation = Anderson: replaces the step's moves by Anderson's step (mixing ω, Aitken's) from
+  /// the positions and residuals so far (`restart`: forget them first); returns |step|∞/|plain
+  /// update|∞.
+  double andersonStep(const Mesh& mesh, FreeSurfaceStep& step, AndersonAcceleration& anderson, bool restart,
+                      double omega) const;
   static constexpr double kMinRelaxation = 0.1, kMaxRelaxation = 1.5;  ///< Aitken's ω kept in here
+  /// Anderson's step is at most this many times the plain update's (else the plain update).
+  static constexpr double kMaxAndersonGain = 10.0;
   static constexpr int kMaxHalvings = 6;  ///< of a move that would invert a cell
   const FreeSurfaces& m_surfaces;
   int m_maxIterations;
   double m_angleTolerance, m_moveTolerance;
-  enum class Relaxation { None, Aitken, Newton } m_relaxation;
+  int m_andersonDepth;
+  enum class Relaxation { None, Aitken, Anderson, Newton } m_relaxation;
 };
 
 }  // namespace flowform
