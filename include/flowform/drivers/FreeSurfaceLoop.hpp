@@ -8,7 +8,9 @@
 // tool may be activated by the status loop, an active node in tension or not reached by the
 // surface released, so a run starts elsewhere); the loop counts its iterations and gives up, with
 // the reason, at Maximum Iterations — it cannot cycle silently. A move that would invert a cell
-// is halved (up to kMaxHalvings times) first.
+// is halved (up to kMaxHalvings times) first. The update's step (Relaxation, docs/theory.md §3.2):
+// the plain one onto the streamlines, Aitken's ω times it, Anderson's multisecant step from the
+// last updates with Aitken's ω as its mixing (the default), or Newton on the positions.
 #pragma once
 
 #include <array>
