@@ -1,5 +1,5 @@
 // Anderson acceleration of a fixed-point iteration x ← g(x) (Walker & Ni, SIAM J. Numer. Anal.
-// 49 (2011); docs/theory.md §3): with the residuals f_j = g(x_j) − x_j of the last m + 1 iterates,
+// 49 (2011); docs/theory.md §3.2): with the residuals f_j = g(x_j) − x_j of the last m + 1 iterates,
 //     ΔF = [f_{j+1} − f_j],  ΔX = [x_{j+1} − x_j]  (j over the last m pairs),
 //     γ  = argmin |f_k − ΔF γ|₂,
 //     x_{k+1} = x_k + β f_k − (ΔX + β ΔF) γ     (β the mixing: the plain step's relaxation),
@@ -21,7 +21,7 @@ class AndersonAcceleration {
   /// `depth` m ≥ 1: how many differences the step uses at most.
   explicit AndersonAcceleration(int depth) : m_depth(depth) {}
 
-  /// Forgets the history: the next step is the plain one, Δx = f (the map changed, or its unknowns).
+  /// Forgets the history: the next step is the plain one, Δx = β f (the map changed, or its unknowns).
   void reset() {
     m_x.clear();
     m_f.clear();
