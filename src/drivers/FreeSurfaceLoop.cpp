@@ -175,7 +175,9 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
     report.resolveSeconds += since(t);
     report.newtonIterations += newton;
     report.contactChanges += changes;
-    restartAnderson = changes > 0 || halvings > 0;
+    // The map changed (a status changed in the re-solve, or a node the update released) or the
+    // move was not the step's (halved): Anderson's history starts again at the next update.
+    restartAnderson = changes > 0 || halvings > 0 || !step.released.empty();
     report.history.push_back({{"flow_angle", step.maxFlowAngle}, {"move", step.maxMove}, {"relaxation", stepGain},
                               {"clamped_to_tool", step.clampedToTool}, {"released", step.released.size()},
                               {"halvings", halvings}, {"newton_iterations", newton},
@@ -215,12 +217,15 @@ double FreeSurfaceLoop::andersonStep(const Mesh& mesh, FreeSurfaceStep& step, An
   std::vector<double> dx = anderson.step(x, f, omega);
   // Safeguard: a step more than kMaxAndersonGain times the plain one is not trusted (a history
   // from a different regime): the plain update, and the history starts again.
+  // A non-finite entry (an overflowing γ) is refused the same way.
   double fMax = 0.0, dxMax = 0.0;
+  bool finite = true;
   for (size_t i = 0; i < f.size(); ++i) {
     fMax = std::max(fMax, std::abs(f[i]));
     dxMax = std::max(dxMax, std::abs(dx[i]));
+    finite = finite && std::isfinite(dx[i]);
   }
-  if (!(dxMax <= kMaxAndersonGain * fMax)) {
+  if (!finite || !(dxMax <= kMaxAndersonGain * fMax)) {
     anderson.reset();
     dx = anderson.step(x, f, omega);
     dxMax = omega * fMax;

@@ -6,7 +6,9 @@
 // - with the mixing β = 0.5 the same (β changes the path, not the fixed point);
 // - a repeated iterate (a zero column ΔF) is dropped, not divided by: the step stays finite and
 //   the plain one (f) comes back;
-// - reset() forgets the history: the next step is β f.
+// - reset() forgets the history: the next step is β f; so does an iterate of another size;
+// - a one-column step is the secant step along that column (checked by value), and the history
+//   keeps only the last depth + 1 iterates (depth 1: one column at most, the newest pair's).
 #include <Teuchos_UnitTestHarness.hpp>
 #include <array>
 #include <cmath>
@@ -83,6 +85,32 @@ TEUCHOS_UNIT_TEST(AndersonAcceleration, DropsADependentColumnAndResets) {
   dx = anderson.step({1.5, 1.75}, {0.25, 0.0}, 0.5);
   TEST_EQUALITY(anderson.columnsUsed(), 0);
   TEST_FLOATING_EQUALITY(dx[0], 0.125, 1e-15);
+}
+
+TEUCHOS_UNIT_TEST(AndersonAcceleration, OneColumnStepAndDepth) {
+  // Scalar map g(x) = 0.5 x + 1 (x* = 2), residual f = 1 − 0.5 x. From x0 = 0 (f0 = 1) and
+  // x1 = 1 (f1 = 0.5): ΔF = −0.5, ΔX = 1, γ = f1/ΔF = −1, Δx = f1 − γ(ΔX + ΔF) = 0.5 + 0.5 = 1:
+  // x2 = 2, the fixed point (the secant step is exact on a linear map).
+  AndersonAcceleration anderson(1);
+  anderson.step({0.0}, {1.0}, 1.0);
+  std::vector<double> dx = anderson.step({1.0}, {0.5}, 1.0);
+  TEST_EQUALITY(anderson.columnsUsed(), 1);
+  TEST_FLOATING_EQUALITY(dx[0], 1.0, 1e-14);
+  // Depth 1 keeps the newest pair only: from x = 2.5 (f = −0.25) the column is (1 → 2.5), not
+  // (0 → 1): ΔF = −0.75, ΔX = 1.5, γ = 1/3, Δx = −0.25 − (1.5 − 0.75)/3 = −0.5, to x* = 2 again.
+  dx = anderson.step({2.5}, {-0.25}, 1.0);
+  TEST_EQUALITY(anderson.columnsUsed(), 1);
+  TEST_FLOATING_EQUALITY(dx[0], -0.5, 1e-14);
+  // In two unknowns, with independent differences, depth 1 still uses one column (the newest).
+  AndersonAcceleration shallow(1);
+  shallow.step({0.0, 0.0}, {1.0, 0.0}, 1.0);
+  shallow.step({1.0, 0.0}, {0.0, 1.0}, 1.0);
+  shallow.step({1.0, 1.0}, {0.5, 0.0}, 1.0);  // ΔF (−1, 1) and (0.5, −1): independent
+  TEST_EQUALITY(shallow.columnsUsed(), 1);
+  // An iterate of another size starts the history again.
+  dx = anderson.step({1.0, 1.0}, {0.5, 0.25}, 0.5);
+  TEST_EQUALITY(anderson.columnsUsed(), 0);
+  TEST_FLOATING_EQUALITY(dx[1], 0.125, 1e-15);
 }
 
 }  // namespace
