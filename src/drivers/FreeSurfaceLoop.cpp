@@ -100,10 +100,11 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
       }
       previousResidual = step.residual;
     }
-    step.relax(relaxation);
     double stepGain = relaxation;  // the step over the plain update: ω, or Anderson's
     if (m_relaxation == Relaxation::Anderson)
       stepGain = andersonStep(mesh, step, anderson, restartAnderson, relaxation);
+    else
+      step.relax(relaxation);
     std::string newtonFailure;
     if (m_relaxation == Relaxation::Newton && !(step.maxFlowAngle <= angleLimit && step.maxMove <= moveLimit)) {
       // With a status change pending (released nodes) the linearization's unknowns differ: plain.
@@ -199,19 +200,22 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
 
 double FreeSurfaceLoop::andersonStep(const Mesh& mesh, FreeSurfaceStep& step, AndersonAcceleration& anderson,
                                      bool restart, double omega) const {
-  // The unknowns: every move's node position along its directions (the residual's layout).
-  std::vector<double> x, f = step.residual;
+  // The unknowns: every move's node position along its directions (the residual's layout), each
+  // entry's direction and move.
+  std::vector<double> x;
+  const std::vector<double>& f = step.residual;
   std::vector<std::array<double, 2>> directions;
-  for (const FreeSurfaceStep::Move& m : step.moves)
-    for (const auto& d : m.directions()) {
-      const auto& p = mesh.coords[m.node];
+  std::vector<size_t> ofMove;
+  for (size_t k = 0; k < step.moves.size(); ++k)
+    for (const auto& d : step.moves[k].directions()) {
+      const auto& p = mesh.coords[step.moves[k].node];
       x.push_back(p[0] * d[0] + p[1] * d[1]);
       directions.push_back(d);
+      ofMove.push_back(k);
     }
   // A status change alters the map (released nodes, a re-solve that changed statuses) and a halved
   // move did not go where the step said: the history no longer describes it.
-  if (restart || !step.released.empty() || x.size() != f.size()) anderson.reset();
-  if (x.size() != f.size()) return omega;  // (the plain update, as relaxed already)
+  if (restart || !step.released.empty()) anderson.reset();
   // The mixing β is Aitken's ω of this update: the plain step relaxed as Aitken would (an overshooting
   // mode, as at a refined chip's corner, damped), the history removing the slow modes.
   std::vector<double> dx = anderson.step(x, f, omega);
@@ -232,12 +236,10 @@ double FreeSurfaceLoop::andersonStep(const Mesh& mesh, FreeSurfaceStep& step, An
   }
   const double gain = fMax > 0.0 ? dxMax / fMax : 1.0;
   std::vector<std::array<double, 2>> perMove(step.moves.size(), {0.0, 0.0});
-  size_t i = 0;
-  for (size_t k = 0; k < step.moves.size(); ++k)
-    for (size_t c = 0; c < step.moves[k].directions().size(); ++c, ++i) {
-      perMove[k][0] += dx[i] * directions[i][0];
-      perMove[k][1] += dx[i] * directions[i][1];
-    }
+  for (size_t i = 0; i < dx.size(); ++i) {
+    perMove[ofMove[i]][0] += dx[i] * directions[i][0];
+    perMove[ofMove[i]][1] += dx[i] * directions[i][1];
+  }
   step.setMoves(perMove);
   return gain;
 }
