@@ -1,6 +1,7 @@
 // flowform CASE.xml [-o OUTDIR] [--set Path/To/Param=value ...] [--quiet]
 // Exit status: 0 converged, 2 bad input (nothing written), 3 not converged (results
-// written, flagged in summary.json).
+// written, flagged in summary.json), 1 anything else that stops the run (an output file that
+// cannot be written, an internal failure): the message says what.
 #include <filesystem>
 #include <unistd.h>
 #include <iostream>
@@ -20,6 +21,7 @@
 
 namespace {
 
+constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 
 void printHelp() {
@@ -35,7 +37,8 @@ void printHelp() {
       "  --help            this text and every valid parameter with its documentation\n\n"
       "outputs in OUTDIR: summary.json, solution.h5 + solution.xdmf (ParaView),\n"
       "boundary_<group>.csv per named boundary group\n"
-      "exit status: 0 converged, 2 bad input, 3 not converged (results written, flagged)\n\n"
+      "exit status: 0 converged, 2 bad input, 3 not converged (results written, flagged),\n"
+      "1 any other failure (an output file that cannot be written, ...; the message says what)\n\n"
       "valid parameters:\n";
   flowform::Simulation::validParameters()->print(
       std::cout, Teuchos::ParameterList::PrintOptions().showDoc(true).indent(2).showTypes(true));
@@ -122,5 +125,10 @@ int main(int argc, char* argv[]) {
   } catch (const flowform::InputError& e) {
     if (comm->getRank() == 0) std::cerr << "flowform: input error: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const std::exception& e) {
+    // Not the input and not the numerics (those are reported and exit 3): an output that cannot
+    // be written, an allocation, a library's failure. Said plainly rather than an abort.
+    std::cerr << "flowform: error: " << e.what() << "\n";
+    return kExitFailure;
   }
 }

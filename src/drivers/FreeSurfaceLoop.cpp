@@ -50,6 +50,28 @@ void FreeSurfaceReport::report(nlohmann::json& summary) const {
   if (!message.empty()) summary["free_surface"]["message"] = message;
 }
 
+void FreeSurfaceReport::appendTo(const FreeSurfaceReport& earlier) {
+  iterations += earlier.iterations;
+  newtonIterations += earlier.newtonIterations;
+  contactChanges += earlier.contactChanges;
+  seconds += earlier.seconds;
+  motionSeconds += earlier.motionSeconds;
+  resolveSeconds += earlier.resolveSeconds;
+  // The earlier entries keep their loop number; this loop's is one past the earlier's last.
+  int loop = 0;
+  nlohmann::json merged = nlohmann::json::array();
+  for (const auto& entry : earlier.history) {
+    merged.push_back(entry);
+    if (!merged.back().contains("loop")) merged.back()["loop"] = 0;
+    loop = std::max(loop, merged.back()["loop"].get<int>() + 1);
+  }
+  for (const auto& entry : history) {
+    merged.push_back(entry);
+    merged.back()["loop"] = loop;
+  }
+  history = std::move(merged);
+}
+
 FreeSurfaceLoop::FreeSurfaceLoop(const FreeSurfaces& surfaces, const Teuchos::ParameterList& settings)
     : m_surfaces(surfaces),
       m_maxIterations(settings.get<int>("Maximum Iterations")),

@@ -19,13 +19,15 @@ set(FLOWFORM_BAD_INPUT_OUT ${CMAKE_CURRENT_BINARY_DIR}/regression/bad_input)
 set(FLOWFORM_CHECK_EXIT ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_exit.py)
 
 # flowform_exit_test(NAME CASE case.xml [SET P=V ...] [ARGS ...] [CONTAINS text ...]
-#                    [STATUS n] [NP n] [CONVERGED])
+#                    [STATUS n] [NP n] [CONVERGED | OUTDIR_IS_A_FILE | SUMMARY_IS_A_DIRECTORY])
 #   Runs flowform on bad_input/CASE with -o <build>/regression/bad_input/NAME, the --set
 #   overrides and extra arguments, and checks exit status n (default 2), that stderr
 #   contains each CONTAINS text, and that nothing was written (or, with CONVERGED, that
-#   summary.json says converged). NP n > 1 runs it under mpiexec on n ranks.
+#   summary.json says converged; with OUTDIR_IS_A_FILE / SUMMARY_IS_A_DIRECTORY, that the
+#   file or directory put in the way first is left as it was). NP n > 1 runs it under
+#   mpiexec on n ranks.
 function(flowform_exit_test name)
-  cmake_parse_arguments(ARG "CONVERGED;OUTDIR_IS_A_FILE" "CASE;STATUS;NP" "SET;ARGS;CONTAINS" ${ARGN})
+  cmake_parse_arguments(ARG "CONVERGED;OUTDIR_IS_A_FILE;SUMMARY_IS_A_DIRECTORY" "CASE;STATUS;NP" "SET;ARGS;CONTAINS" ${ARGN})
   if(NOT DEFINED ARG_STATUS)
     set(ARG_STATUS 2)
   endif()
@@ -38,6 +40,8 @@ function(flowform_exit_test name)
     list(APPEND check --converged)
   elseif(ARG_OUTDIR_IS_A_FILE)
     list(APPEND check --outdir-is-a-file)
+  elseif(ARG_SUMMARY_IS_A_DIRECTORY)
+    list(APPEND check --summary-is-a-directory)
   else()
     list(APPEND check --no-output)
   endif()
@@ -64,6 +68,10 @@ flowform_exit_test(regression_good_channel_small CASE channel_small.xml STATUS 0
 # --- the output directory: checked before any work (a solve is not lost to a bad -o) ------------
 flowform_exit_test(bad_input_outdir_is_a_file CASE channel_small.xml OUTDIR_IS_A_FILE
   CONTAINS "exists and is not a directory")
+# An output that cannot be written after the solve (summary.json is a directory): not bad input
+# and not the numerics, so exit 1 with the file named, not an abort.
+flowform_exit_test(output_unwritable_summary CASE channel_small.xml STATUS 1 SUMMARY_IS_A_DIRECTORY
+  CONTAINS "flowform: error:" "summary.json")
 
 # --- the case file -----------------------------------------------------------------------------
 flowform_exit_test(bad_input_malformed_xml CASE malformed.xml

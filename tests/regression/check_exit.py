@@ -2,7 +2,8 @@
 """Runs one flowform command and checks how it ended (tests/regression/BadInput.cmake).
 
 usage: check_exit.py --outdir DIR [--status N] [--stderr-contains TEXT ...]
-                     [--no-output | --converged | --outdir-is-a-file] -- COMMAND ...
+                     [--no-output | --converged | --outdir-is-a-file | --summary-is-a-directory]
+                     -- COMMAND ...
 
   --outdir DIR           the output directory the command was given (-o DIR); removed first,
                          so a result from an earlier run cannot pass the check
@@ -11,6 +12,8 @@ usage: check_exit.py --outdir DIR [--status N] [--stderr-contains TEXT ...]
   --no-output            DIR must not exist afterwards (bad input writes nothing)
   --converged            DIR/summary.json must exist and say "converged": true
   --outdir-is-a-file     DIR is made a regular file first and must be left as it was
+  --summary-is-a-directory  DIR/summary.json is made a directory first (the run cannot write its
+                         summary) and must be left as it was, empty
 
 Prints the command, its status and its output, then each failed check; exits 0 when every
 check passes, 1 otherwise.
@@ -37,6 +40,8 @@ def main():
     mode.add_argument("--converged", action="store_true")
     mode.add_argument("--outdir-is-a-file", action="store_true",
                       help="make DIR a regular file first; it must be left as it was")
+    mode.add_argument("--summary-is-a-directory", action="store_true",
+                      help="make DIR/summary.json a directory first; it must be left as it was")
     parser.add_argument("--timeout", type=float, default=600)
     args = parser.parse_args(sys.argv[1:split])
     command = sys.argv[split + 1:]
@@ -51,6 +56,9 @@ def main():
         os.makedirs(os.path.dirname(os.path.abspath(args.outdir)), exist_ok=True)
         with open(args.outdir, "w") as f:
             f.write(marker)
+    blocked_summary = os.path.join(args.outdir, "summary.json")
+    if args.summary_is_a_directory:
+        os.makedirs(blocked_summary)
     print("command:", launcher.command_line(command))
     run = launcher.run_command(command, capture=True, timeout=args.timeout)
     if run.timed_out:
@@ -78,6 +86,8 @@ def main():
                     failures.append(f"{args.outdir} was changed")
         except OSError as e:
             failures.append(f"{args.outdir} is no longer a readable file: {e}")
+    if args.summary_is_a_directory and not (os.path.isdir(blocked_summary) and not os.listdir(blocked_summary)):
+        failures.append(f"{blocked_summary} is no longer an empty directory")
     if args.converged:
         path = os.path.join(args.outdir, "summary.json")
         try:

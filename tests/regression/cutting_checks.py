@@ -43,7 +43,8 @@ usage: cutting_checks.py FLOWFORM SOURCE_DIR WORKDIR
    traction-free), so F_c equals the drive force; balances and mass as above; F_t/F_c between
    0.9 ν and ν; the separation node that cycles decides by itself (self_deciding_contacts >= 1:
    measured 1, the point lies inside a rake segment); the refined solve starts released and
-   converges (measured 18 updates, against 39 + 29).
+   converges (measured 18 updates, against 39 + 29); the summary's loop block covers both loops
+   (one history entry per update, tagged loop 0 or 1; the seconds of both).
 5. Bad input exits 2 and writes nothing: a Contact Length or a Wall Force on a group that is not a
    contact wall, a Thickness Ratio with a Reference Thickness <= 0.
    A Parallel To naming no group, or a curved one, exits 2 as well, and so does Release After
@@ -178,6 +179,14 @@ def main():
         failed += balances(f, "free chip")
         ratio = f["thrust_force"] / f["cutting_force"]
         failed += checks.check(0.9 * 0.2 <= ratio <= 0.2 + 1e-12, f"free chip: F_t/F_c = {ratio:.5f} (ν = 0.2)")
+        # The summary's loop block covers both loops (held outlet, then released): every update
+        # in the history, tagged by its loop, and the seconds of both.
+        history = fs.get("history") or []
+        loops = sorted({entry.get("loop") for entry in history})
+        failed += checks.check(len(history) == fs.get("iterations") and loops == [0, 1] and
+                               fs.get("seconds", 0) >= fs.get("resolve_seconds", 0) + fs.get("motion_seconds", 0) > 0,
+                               f"free chip: {len(history)} history entries for {fs.get('iterations')} updates, "
+                               f"loops {loops}, {fs.get('seconds', 0):.1f} s")
         failed += checks.check(fs.get("self_deciding_contacts", 0) >= 1,
                                f"free chip: {fs.get('self_deciding_contacts')} self-deciding separation node(s)")
         refined = (s.get("error_estimation") or {}).get("refined_free_surface_iterations")

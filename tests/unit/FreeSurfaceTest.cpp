@@ -14,7 +14,9 @@
 //   the two drags, and each end keeps its own move (each end is in the other's drag list, with
 //   fraction 0);
 // - a Start Group that shares no end of the surface is an input error naming it;
-// - the loop halves a move that would invert a cell and goes on.
+// - the loop halves a move that would invert a cell and goes on;
+// - a second loop's report (a released chip outlet) takes in the first's: counts and seconds
+//   add, the history is both loops', each entry tagged with its loop.
 // Round-off bounds: 1e-12 (direct solve of a 100-node system, coordinates of order 1).
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
@@ -218,4 +220,34 @@ TEUCHOS_UNIT_TEST(FreeSurface, LoopHalvesMovesThatInvert) {
   TEST_ASSERT(!impossible.converged);
   TEST_EQUALITY(impossible.iterations, 0);
   TEST_ASSERT(impossible.message.find("invert") != std::string::npos);
+}
+
+// Two loops of one run (the first ends when the surfaces converge with the outlet held, the
+// second after its release): the report of the second takes in the first's.
+TEUCHOS_UNIT_TEST(FreeSurface, SecondLoopReportTakesInTheFirst) {
+  FreeSurfaceReport first = loopAt(0.1, 3), second = loopAt(0.2, 2);
+  TEST_EQUALITY(first.history.size(), static_cast<size_t>(first.iterations));
+  const int iterations = first.iterations + second.iterations;
+  const double seconds = first.seconds + second.seconds;
+  const bool secondConverged = second.converged;
+  const double secondAngle = second.flowAngle;
+  first.newtonIterations = 7;
+  first.contactChanges = 2;
+  second.newtonIterations = 5;
+  second.contactChanges = 1;
+  second.appendTo(first);
+  TEST_EQUALITY(second.iterations, iterations);
+  TEST_EQUALITY(second.newtonIterations, 12);
+  TEST_EQUALITY(second.contactChanges, 3);
+  TEST_FLOATING_EQUALITY(second.seconds, seconds, 1e-14);
+  TEST_EQUALITY(second.converged, secondConverged);
+  TEST_EQUALITY(second.flowAngle, secondAngle);
+  TEST_EQUALITY(second.history.size(), static_cast<size_t>(iterations));
+  for (size_t k = 0; k < second.history.size(); ++k)
+    TEST_EQUALITY(second.history[k]["loop"].get<int>(), k < first.history.size() ? 0 : 1);
+  // A third loop continues the numbering.
+  FreeSurfaceReport third = loopAt(0.3, 1);
+  third.appendTo(second);
+  TEST_EQUALITY(third.history.back()["loop"].get<int>(), 2);
+  TEST_EQUALITY(third.history.front()["loop"].get<int>(), 0);
 }

@@ -45,6 +45,10 @@ struct FreeSurfaceReport {
   nlohmann::json history = nlohmann::json::array();  ///< per iteration: angle, move, Newton, changes
   /// free_surface_iterations and the "free_surface" block of summary.json.
   void report(nlohmann::json& summary) const;
+  /// This report, a later loop of the same run, takes in an earlier one: counts and seconds add,
+  /// the history is the earlier's then this one's (each entry tagged with its loop, 0 the first);
+  /// the state (converged, flow angle, move, grazing contacts, message) stays this loop's.
+  void appendTo(const FreeSurfaceReport& earlier);
 };
 
 class FreeSurfaceLoop {
