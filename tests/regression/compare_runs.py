@@ -1,13 +1,17 @@
 #!/usr/bin/python3
 """Runs a case serially and on N ranks and compares solution.h5 field by field.
 
-usage: compare_runs.py FLOWFORM MPIEXEC NP CASE.xml WORKDIR [--set P=V ...]
+usage: compare_runs.py FLOWFORM MPIEXEC NP CASE.xml WORKDIR [--tol TOL] [--set P=V ...]
 Passes when every nodal field, and every response's error estimate when the case asks for
 them, agrees to `tol` relative to its largest magnitude. The two
 runs solve the same linear systems (the parallel direct solve gathers to one rank), so
 only the summation order of the assembly differs: round-off, amplified by the Newton
-iterations and the condition number; 1e-9 leaves ~4 orders of magnitude over the 1e-13
-measured on the channel.
+iterations and the condition number; 1e-9 (the default) leaves ~4 orders of magnitude over
+the 1e-13 measured on the channel. A case whose free-surface loop makes tens of re-solves
+amplifies it further, and on 2 ranks the round-off is not even repeatable from run to run
+(two np = 2 runs of the cutting scene's free chip: F_c 1.6e-13 apart, serial runs bitwise
+equal): such a case passes its own --tol, justified where it is registered
+(tests/regression/Parallel.cmake).
 """
 import os
 import sys
@@ -24,6 +28,10 @@ TOL_SHAPE = 1e-6
 def main():
     flowform, mpiexec, nprocs, case, workdir = sys.argv[1:6]
     extra = sys.argv[6:]
+    tol = TOL
+    if extra[:1] == ["--tol"]:
+        tol = float(extra[1])
+        extra = extra[2:]
     serial_dir = os.path.join(workdir, "np1")
     parallel_dir = os.path.join(workdir, "np" + nprocs)
     for outdir, np_ in ((serial_dir, 1), (parallel_dir, int(nprocs))):
@@ -39,18 +47,18 @@ def main():
         scale = max(np.abs(x).max(), 1e-300)
         diff = np.abs(x - y).max() / scale
         print(f"{name}: max |serial - np{nprocs}| / max |serial| = {diff:.3e}")
-        failed |= not diff <= TOL
+        failed |= not diff <= tol
     # The node positions (moved by a free-surface loop: every rank must move its copy alike).
     diff = np.abs(a.xy - b.xy).max() / max(np.abs(a.xy).max(), 1e-300)
     print(f"node positions: max |serial - np{nprocs}| / max |serial| = {diff:.3e}")
-    failed |= not diff <= TOL
+    failed |= not diff <= tol
     # The error estimates, when the case asks for them (the refined solve runs on the same ranks).
     sa, sb = summary.load(serial_dir) or {}, summary.load(parallel_dir) or {}
     for name, eta in (sa.get("functionals_error_estimate") or {}).items():
         other = (sb.get("functionals_error_estimate") or {}).get(name)
         diff = abs(eta - other) / max(abs(eta), 1e-300) if other is not None else float("inf")
         print(f"error estimate {name}: |serial - np{nprocs}| / |serial| = {diff:.3e}")
-        failed |= not diff <= TOL
+        failed |= not diff <= tol
     # Total derivatives through moving free surfaces: central differences in the node positions
     # (step 1e-6 of the surface length) turn the assembly's round-off (1e-16) into 1e-10 of
     # each term; 1e-6 leaves that four orders of magnitude. The scale is the larger of the total
