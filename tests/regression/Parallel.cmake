@@ -70,8 +70,8 @@ flowform_parallel_equals_serial(separation extrusion_separation.xml --set "Adapt
 # outlet held parallel to the rake (a rotated Dirichlet condition) until the surfaces converge,
 # then released and the loop goes on with Anderson's history; a self-deciding separation node.
 # The loop's ~70 re-solves amplify the round-off of the assembly's summation order, which on 2
-# ranks is not repeatable from run to run (two np = 2 runs: F_c 1.6e-13 apart): over 6 repeats
-# (2026-11-25) the fields agreed to 4e-10 ... 3e-9 of their largest (strain rate, viscosity;
+# ranks is not repeatable from run to run (two np = 2 runs: F_c 1.6e-13 apart): over 7 runs
+# (2026-11-25) the fields agreed to 2e-10 ... 3e-9 of their largest (strain rate, viscosity;
 # velocity ≤ 6e-12, node positions ≤ 2e-12), the contact statuses exactly. Tolerance 1e-7: 30×
 # the largest measured, 10³ below the loop's own move tolerance (1e-4). 45–55 s for both runs.
 flowform_parallel_equals_serial(cutting_free_chip cutting.xml --tol 1e-7 --set "Error Estimation/Method=None"
