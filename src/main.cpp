@@ -3,6 +3,7 @@
 // written, flagged in summary.json), 1 anything else that stops the run (an output file that
 // cannot be written, an internal failure): the message says what.
 #include <filesystem>
+#include <mpi.h>
 #include <unistd.h>
 #include <iostream>
 #include <string>
@@ -128,7 +129,9 @@ int main(int argc, char* argv[]) {
   } catch (const std::exception& e) {
     // Not the input and not the numerics (those are reported and exit 3): an output that cannot
     // be written, an allocation, a library's failure. Said plainly rather than an abort.
+    // On more ranks the others may wait in a collective for this one: stop them all.
     std::cerr << "flowform: error: " << e.what() << "\n";
+    if (comm->getSize() > 1) MPI_Abort(MPI_COMM_WORLD, kExitFailure);
     return kExitFailure;
   }
 }

@@ -72,6 +72,9 @@ flowform_exit_test(bad_input_outdir_is_a_file CASE channel_small.xml OUTDIR_IS_A
 # and not the numerics, so exit 1 with the file named, not an abort.
 flowform_exit_test(output_unwritable_summary CASE channel_small.xml STATUS 1 SUMMARY_IS_A_DIRECTORY
   CONTAINS "flowform: error:" "summary.json")
+# The same on 2 ranks: the failing rank stops the other (MPI_Abort), so the run ends, exit 1.
+flowform_exit_test(output_unwritable_summary_np2 CASE channel_small.xml STATUS 1 SUMMARY_IS_A_DIRECTORY NP 2
+  CONTAINS "flowform: error:" "summary.json")
 
 # --- the case file -----------------------------------------------------------------------------
 flowform_exit_test(bad_input_malformed_xml CASE malformed.xml
