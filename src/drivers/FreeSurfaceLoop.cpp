@@ -50,7 +50,7 @@ void FreeSurfaceReport::report(nlohmann::json& summary) const {
   if (!message.empty()) summary["free_surface"]["message"] = message;
 }
 
-void FreeSurfaceReport::appendTo(const FreeSurfaceReport& earlier) {
+void FreeSurfaceReport::continueFrom(const FreeSurfaceReport& earlier) {
   iterations += earlier.iterations;
   newtonIterations += earlier.newtonIterations;
   contactChanges += earlier.contactChanges;

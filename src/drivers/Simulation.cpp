@@ -135,7 +135,7 @@ const SolveReport& Simulation::run() {
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged && !m_freeSurfaces->empty()) {
-    loopFreeSurfaces(solver, {m_report.unsettledContacts, m_report.unsettledContactRatio}, "", false);
+    loopFreeSurfaces(solver, {m_report.unsettledContacts, m_report.unsettledContactRatio}, "");
     if (m_report.converged && m_bcs->releaseHeld(m_mesh)) releaseHeldAndGoOn(solver);
   }
   if (m_report.converged)
@@ -250,17 +250,16 @@ void Simulation::releaseHeldAndGoOn(NonlinearSolver& solver) {
     m_report.message = "the flow with the held groups released did not converge: " + r.message;
     return;
   }
-  loopFreeSurfaces(solver, {r.unsettledContacts, r.unsettledContactRatio}, "after the held groups were released: ",
-                   true);
+  const FreeSurfaceReport held = m_freeSurfaceReport;  // the loop with the groups held
+  loopFreeSurfaces(solver, {r.unsettledContacts, r.unsettledContactRatio}, "after the held groups were released: ");
+  m_freeSurfaceReport.continueFrom(held);
 }
 
 void Simulation::loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart,
-                                  const std::string& context, bool afterEarlierLoop) {
-  const FreeSurfaceReport earlier = m_freeSurfaceReport;
+                                  const std::string& context) {
   m_freeSurfaceReport = convergeFreeSurfaces(solver, *m_solution, m_physics, unsettledAtStart);
   m_report.newtonIterations += m_freeSurfaceReport.newtonIterations;
   m_contactChanges += m_freeSurfaceReport.contactChanges;
-  if (afterEarlierLoop) m_freeSurfaceReport.appendTo(earlier);
   if (!m_freeSurfaceReport.converged) {
     m_report.converged = false;
     m_report.message = context + m_freeSurfaceReport.message;

@@ -235,7 +235,7 @@ TEUCHOS_UNIT_TEST(FreeSurface, SecondLoopReportTakesInTheFirst) {
   first.contactChanges = 2;
   second.newtonIterations = 5;
   second.contactChanges = 1;
-  second.appendTo(first);
+  second.continueFrom(first);
   TEST_EQUALITY(second.iterations, iterations);
   TEST_EQUALITY(second.newtonIterations, 12);
   TEST_EQUALITY(second.contactChanges, 3);
@@ -247,7 +247,7 @@ TEUCHOS_UNIT_TEST(FreeSurface, SecondLoopReportTakesInTheFirst) {
     TEST_EQUALITY(second.history[k]["loop"].get<int>(), k < first.history.size() ? 0 : 1);
   // A third loop continues the numbering.
   FreeSurfaceReport third = loopAt(0.3, 1);
-  third.appendTo(second);
+  third.continueFrom(second);
   TEST_EQUALITY(third.history.back()["loop"].get<int>(), 2);
   TEST_EQUALITY(third.history.front()["loop"].get<int>(), 0);
 }

@@ -48,7 +48,7 @@ struct FreeSurfaceReport {
   /// This report, a later loop of the same run, takes in an earlier one: counts and seconds add,
   /// the history is the earlier's then this one's (each entry tagged with its loop, 0 the first);
   /// the state (converged, flow angle, move, grazing contacts, message) stays this loop's.
-  void appendTo(const FreeSurfaceReport& earlier);
+  void continueFrom(const FreeSurfaceReport& earlier);
 };
 
 class FreeSurfaceLoop {

@@ -126,14 +126,13 @@ class Simulation {
   /// penalty scales from the state before every Newton solve.
   NonlinearSolver newtonSolver(bool refreshScales);
   /// The groups marked Release After Free Surfaces are released (BoundaryConditions::releaseHeld):
-  /// the flow is re-solved and the free-surface loop goes on from the converged shape.
+  /// the flow is re-solved and the free-surface loop goes on from the converged shape; its report
+  /// continues the held loop's (FreeSurfaceReport::continueFrom).
   void releaseHeldAndGoOn(NonlinearSolver& solver);
-  /// The free-surface loop on the run's own state (convergeFreeSurfaces); its Newton iterations
-  /// and changes add to the run's, its report (m_freeSurfaceReport) takes in the earlier loop's
-  /// when `afterEarlierLoop` (FreeSurfaceReport::appendTo), and a failure makes the run
-  /// unconverged, `context` prefixed to its message.
-  void loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart, const std::string& context,
-                        bool afterEarlierLoop);
+  /// The free-surface loop on the run's own state (convergeFreeSurfaces): its report is
+  /// m_freeSurfaceReport, its Newton iterations and changes add to the run's, and a failure makes
+  /// the run unconverged, `context` prefixed to its message.
+  void loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart, const std::string& context);
   /// The free-surface loop from the converged flow at `physics` (x, the walls and the mesh move);
   /// the re-solves use `solver`.
   /// `unsettledAtStart`: contact nodes the solve before it left cycling (SolveReport::unsettledContacts).
