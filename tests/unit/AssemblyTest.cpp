@@ -262,4 +262,90 @@ TEUCHOS_UNIT_TEST(Assembly, JacobianMatchesDirectionalFiniteDifferences) {
     }
 }
 
+TEUCHOS_UNIT_TEST(Assembly, UniformNormalVelocityGroupCarriesNoNetNormalForce) {
+  // The group "right" (x = 1, nodes at y = 0, 0.25, ..., 1) with Parallel To = left and Normal
+  // Velocity = Uniform: its u·n (n = left's normal, (−1, 0)) is free but tied along its edges by
+  // ½ α (n·(u_a − u_b))², α = κ σ̄(e0)/(3 e0). Against the same case with "right" traction-free,
+  // the unconstrained residuals differ by the penalty alone: for u_x = s y the jump on every edge
+  // is n·(u_a − u_b) = −s (y_a − y_b), so the interior nodes' forces cancel, the top end gets
+  // α s (1 − 0.75) (1, 0), the bottom end the opposite: no net force on the group.
+  const auto comm = worldComm();
+  const FlowPhysics physics = makePhysics(Geometry::PlaneStrain, kNonlinear, 0.1, 0.0, 0.0);
+  auto conditions = [](bool uniform) {
+    ParameterList list = bcList({{"bottom", "Velocity", {{"Velocity X", 0.0}, {"Velocity Y", 0.0}}}});
+    ParameterList& right = list.sublist("right");
+    if (uniform) {
+      right.set("Type", "Velocity");
+      right.set("Parallel To", "left");
+      right.set("Normal Velocity", "Uniform");
+      right.set("Normal Penalty Factor", 50.0);
+    } else {
+      right.set("Type", "Traction");
+    }
+    return list;
+  };
+  const Mesh mesh = makeMesh(CellType::Triangle3, 4, 4, 0.0, 0.0, 1.0, 1.0, 0.0);
+  Problem tied(mesh, conditions(true), physics, comm), loose(mesh, conditions(false), physics, comm);
+  // No node of "right" above the bottom corner is constrained: its rows stay momentum equations.
+  for (LO n = 0; n < LO(tied.dofMap->overlapNodes().size()); ++n) {
+    const auto& xy = tied.mesh.coords[tied.dofMap->overlapNodes()[n]];
+    if (std::abs(xy[0] - 1.0) < 1e-12 && xy[1] > 1e-12)
+      TEST_ASSERT(tied.bcs->constraints()[n].kind == NodeConstraint::Kind::None);
+  }
+  const double s = 0.8;
+  const Field ramp = [s](double, double y) { return std::array<double, 3>{s * y, 0.0, 0.0}; };
+  auto x = tied.vector(), fTied = tied.vector(), fLoose = loose.vector();
+  interpolate(tied.mesh, *tied.dofMap, ramp, *x);
+  tied.assembler->residual(*x, *fTied, false);
+  loose.assembler->residual(*x, *fLoose, false);
+  fTied->update(-1.0, *fLoose, 1.0);  // the penalty's forces
+  const double alpha = 50.0 * viscosity(kNonlinear.cutoff, kNonlinear);
+  double net = 0.0, top = 0.0, elsewhere = 0.0;
+  auto d = fTied->getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (LO n = 0; n < tied.dofMap->numOwnedNodes(); ++n) {
+    const auto& xy = tied.mesh.coords[tied.dofMap->overlapNodes()[n]];
+    const double fx = d(tied.dofMap->dof(n, kUx), 0), fy = d(tied.dofMap->dof(n, kUy), 0);
+    if (std::abs(xy[0] - 1.0) < 1e-12) net += fx;
+    if (std::abs(xy[0] - 1.0) < 1e-12 && std::abs(xy[1] - 1.0) < 1e-12) top += fx;
+    if (std::abs(xy[0] - 1.0) > 1e-12 || (xy[1] > 1e-12 && xy[1] < 1.0 - 1e-12)) elsewhere = std::max(elsewhere, std::abs(fx));
+    elsewhere = std::max(elsewhere, std::abs(fy));
+  }
+  auto sum = [&](double local) {
+    double global = 0.0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+    return global;
+  };
+  net = sum(net);
+  top = sum(top);
+  out << "alpha " << alpha << ", top " << top << ", net " << net << ", elsewhere " << globalMax(*comm, elsewhere) << "\n";
+  TEST_FLOATING_EQUALITY(top, alpha * s * 0.25, 1e-12);
+  TEST_COMPARE(std::abs(net), <=, 1e-12 * alpha);
+  TEST_COMPARE(globalMax(*comm, elsewhere), <=, 1e-12 * alpha);
+  // A uniform u·n (u_x = 0.3 on the group) costs nothing.
+  const Field shift = [](double, double) { return std::array<double, 3>{0.3, 0.0, 0.0}; };
+  interpolate(tied.mesh, *tied.dofMap, shift, *x);
+  tied.assembler->residual(*x, *fTied, false);
+  loose.assembler->residual(*x, *fLoose, false);
+  fTied->update(-1.0, *fLoose, 1.0);
+  TEST_COMPARE(fTied->normInf(), <=, 1e-12 * alpha);
+  // The Jacobian has the penalty: J v against central differences (the term is linear, so the
+  // difference is exact up to round-off, as for the cells at δ = 1e-6: see the test above).
+  auto v = tied.vector(), jv = tied.vector(), xp = tied.vector(), xm = tied.vector(), fp = tied.vector(),
+       fm = tied.vector();
+  interpolate(tied.mesh, *tied.dofMap, kSmooth, *x);
+  tied.bcs->imposeOnSolution(*x);
+  interpolate(tied.mesh, *tied.dofMap, ramp, *v);
+  auto J = tied.assembler->createJacobian();
+  tied.assembler->jacobian(*x, *J);
+  J->apply(*v, *jv);
+  const double delta = 1e-6;
+  xp->update(1.0, *x, delta, *v, 0.0);
+  xm->update(1.0, *x, -delta, *v, 0.0);
+  tied.assembler->residual(*xp, *fp);
+  tied.assembler->residual(*xm, *fm);
+  fp->update(-1.0 / (2 * delta), *fm, 1.0 / (2 * delta));
+  fp->update(-1.0, *jv, 1.0);
+  TEST_COMPARE(fp->normInf(), <=, 1e-7 * jv->normInf());
+}
+
 }  // namespace
