@@ -118,40 +118,6 @@ void Assembler::assembleContact(Workset& ws, const SensitivityParameter* h, bool
   }
 }
 
-double Assembler::uniformNormalPenalty(const UniformNormalEdge& e) const {
-  const auto& material = m_physics.material;
-  double alpha = e.penaltyFactor * viscosity(material.cutoff, material);  // μ at e_r = e0: the rigid zones'
-  if (m_physics.kernel.geometry == Geometry::Axisymmetric) {
-    const auto& overlapNodes = m_dofMap.overlapNodes();
-    alpha *= M_PI * (m_mesh.coords[overlapNodes[e.nodes[0]]][0] + m_mesh.coords[overlapNodes[e.nodes[1]]][0]);
-  }
-  return alpha;
-}
-
-template <typename EvalT>
-void Assembler::assembleUniformNormalEdges(Workset& ws, bool applyConstraints) const {
-  // Per edge (a, b): the jump d = n·(u_a − u_b); R_a += α d n, R_b −= α d n, the gradient of
-  // ½ α d². Equal and opposite: the group's net normal force Σ R·n is zero whatever d is.
-  constexpr int N = 4;
-  using Scalar = typename EvalT::template Scalar<N>;
-  const auto& constraints = m_bcs.constraints();
-  for (const UniformNormalEdge& e : m_bcs.uniformNormalEdges()) {
-    const LO dofs[N] = {m_dofMap.dof(e.nodes[0], kUx), m_dofMap.dof(e.nodes[0], kUy), m_dofMap.dof(e.nodes[1], kUx),
-                        m_dofMap.dof(e.nodes[1], kUy)};
-    Scalar u[N], R[N];
-    gather(ws, dofs, N, u);
-    const double alpha = uniformNormalPenalty(e);
-    const Scalar force = alpha * (e.normal[0] * (u[0] - u[2]) + e.normal[1] * (u[1] - u[3]));
-    R[0] = force * e.normal[0];
-    R[1] = force * e.normal[1];
-    R[2] = -R[0];
-    R[3] = -R[1];
-    if (applyConstraints)
-      for (int a = 0; a < 2; ++a) applyConstraintRows(constraints[e.nodes[a]], R + 2 * a);
-    scatter(ws, dofs, N, dofs, N, R);
-  }
-}
-
 void Assembler::addConstraintRows(const HostView& x, Workset& ws, bool withOffsets) const {
   // Only owned nodes (overlap indices 0..numOwnedNodes-1): each constraint row is added once.
   // Without the offsets (v, b) the rows are their own derivative along x = du.
@@ -211,7 +177,6 @@ void Assembler::residual(const Vector& xOwned, Vector& fOwned, bool applyConstra
     assembleCells<ResidualEval>(ws, nullptr, applyConstraints);
     addTractions(ws, applyConstraints);
     if (m_walls) assembleContact<ResidualEval>(ws, nullptr, applyConstraints);
-    assembleUniformNormalEdges<ResidualEval>(ws, applyConstraints);
     if (applyConstraints) addConstraintRows(ws.x, ws);
   }
   fOwned.putScalar(0.0);
@@ -229,7 +194,6 @@ void Assembler::jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fO
     ws.dual = dual;
     assembleCells<JacobianEval>(ws, nullptr, true);
     if (m_walls) assembleContact<JacobianEval>(ws, nullptr, true);
-    assembleUniformNormalEdges<JacobianEval>(ws, true);
     addConstraintRows(ws.x, ws);
     if (fOwned) addTractions(ws);
   }
@@ -248,7 +212,6 @@ void Assembler::unconstrainedJacobian(const Vector& xOwned, FECrsMatrix& jacobia
     Workset ws = workset(xOverlap, nullptr, nullptr, &jacobian);
     assembleCells<JacobianEval>(ws, nullptr, false);
     if (m_walls) assembleContact<JacobianEval>(ws, nullptr, false);
-    assembleUniformNormalEdges<JacobianEval>(ws, false);
   }
   Tpetra::endAssembly(jacobian);
 }
@@ -264,7 +227,6 @@ void Assembler::tangent(const Vector& xOwned, const Vector* dxOwned, const Sensi
     assembleCells<TangentEval>(ws, h, applyConstraints);
     // The tractions depend on neither x nor h.
     if (m_walls) assembleContact<TangentEval>(ws, h, applyConstraints);
-    assembleUniformNormalEdges<TangentEval>(ws, applyConstraints);
     // The constraint rows a·u − b are linear in u and independent of h: their derivative is a·du.
     if (applyConstraints && dxOwned) addConstraintRows(ws.dx, ws, false);
   }

@@ -373,14 +373,6 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
           else local += (Rk[0] + g * nk[1]) * u[0] + (Rk[1] - g * nk[0]) * u[1];
         }
       }
-      // Penalty Power also takes the Normal Velocity = Uniform edges' α d², d = n·(u_a − u_b)
-      // (each edge by the rank whose cell has it): with them the power balance stays exact.
-      if (r.type == "Penalty Power")
-        for (const UniformNormalEdge& e : assembler.boundaryConditions().uniformNormalEdges()) {
-          const Scalar d = e.normal[0] * (at(x, dofMap.dof(e.nodes[0], kUx)) - at(x, dofMap.dof(e.nodes[1], kUx))) +
-                           e.normal[1] * (at(x, dofMap.dof(e.nodes[0], kUy)) - at(x, dofMap.dof(e.nodes[1], kUy)));
-          local += assembler.uniformNormalPenalty(e) * d * d;
-        }
       values[r.name] = sumOverRanks(comm, local);
     }
   }

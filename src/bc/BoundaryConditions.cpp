@@ -93,20 +93,9 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParamet
     valid->set("Parallel To", "",
                "Velocity type: the name of a straight boundary group (a tool face); u·n = 0 with n that group's "
                "normal, the tangential component left free (a chip leaving along an inclined rake face)");
-    Teuchos::setStringToIntegralParameter<int>(
-        "Normal Velocity", "Zero",
-        "with Parallel To: Zero: u·n = 0 at every node; Uniform: u·n the same at every node of the group but not "
-        "prescribed, so the group moves off the face as a whole without turning and carries no net normal force "
-        "(a straight chip that leaves the rake face at its own angle, with no pivot on it; docs/cutting.md §3): "
-        "the penalty ½ α (n·(u_a − u_b))² on each of its edges, α = Normal Penalty Factor × the material's "
-        "largest viscosity σ̄(e0)/(3 e0)",
-        Teuchos::tuple<std::string>("Zero", "Uniform"), valid.get());
-    valid->set("Normal Penalty Factor", 1e3, "Normal Velocity = Uniform: κ > 0 in α = κ σ̄(e0)/(3 e0) (× 2π r)",
-               Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(1e-300, 1e300)));
     valid->set("Release After Free Surfaces", false,
                "Velocity type: the condition holds while the free surfaces first converge; then the group is "
-               "released (traction-free; with Normal Velocity = Uniform: from u·n = 0 to the uniform normal "
-               "velocity) and the free-surface loop goes on from that shape: a continuation for a "
+               "released (traction-free) and the free-surface loop goes on from that shape: a continuation for a "
                "boundary the loop cannot converge free from the start (a curling chip's outlet)");
     valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components");
     valid->set("Traction Y", 0.0, "traction t_y, force per unit area, on free components");
@@ -126,16 +115,11 @@ bool BoundaryConditions::releaseHeld(const Mesh& mesh) {
   if (m_held.empty()) return false;
   for (const std::string& name : m_held) {
     Teuchos::ParameterList& group = m_bcList.sublist(name);
-    if (group.get<std::string>("Normal Velocity", "Zero") == "Uniform") {
-      // Released to its uniform normal velocity: the same group without the hold.
-      group.remove("Release After Free Surfaces");
-    } else {
-      Teuchos::ParameterList free(name);
-      free.set("Type", "Traction");
-      for (const char* key : {"Traction X", "Traction Y"})
-        if (group.isParameter(key)) free.set(key, group.get<double>(key));
-      group = free;
-    }
+    Teuchos::ParameterList free(name);
+    free.set("Type", "Traction");
+    for (const char* key : {"Traction X", "Traction Y"})
+      if (group.isParameter(key)) free.set(key, group.get<double>(key));
+    group = free;
     m_released.push_back(name);
   }
   build(mesh);  // the released groups no longer hold: m_held empties
@@ -147,16 +131,9 @@ void BoundaryConditions::build(const Mesh& mesh) {
   const DofMap& dofMap = m_dofMap;
   m_constraints.clear();
   m_tractionEdges.clear();
-  m_uniformNormalEdges.clear();
   m_held.clear();
   std::vector<std::vector<LinearCondition>> conditions(mesh.numNodes());
   std::vector<std::pair<const BoundaryGroup*, std::array<double, 2>>> tractionGroups;
-  struct UniformGroup {
-    const BoundaryGroup* group;
-    std::array<double, 2> normal;
-    double penaltyFactor;
-  };
-  std::vector<UniformGroup> uniformGroups;
 
   for (auto it = bcList.begin(); it != bcList.end(); ++it) {
     const std::string& name = bcList.name(it);
@@ -206,19 +183,11 @@ void BoundaryConditions::build(const Mesh& mesh) {
         }
         normal = m_faceNormals.at(parallelTo);
       }
-      // Uniform, or while held (Release After Free Surfaces) u·n = 0 first.
-      const bool uniform = group.get<std::string>("Normal Velocity", "Zero") == "Uniform" &&
-                           !group.get<bool>("Release After Free Surfaces", false);
-      if (group.get<std::string>("Normal Velocity", "Zero") == "Uniform" && parallelTo.empty())
-        throw InputError("Boundary Conditions/" + name + "/Normal Velocity: Uniform is the normal velocity to "
-                         "the group named by 'Parallel To', which is not given");
-      if (uniform) uniformGroups.push_back({&bg, normal, group.get<double>("Normal Penalty Factor", 1e3)});
       for (const auto& e : bg.edges)
         for (GO n : e) {
           if (hasX) conditions[n].push_back({{1.0, 0.0}, group.get<double>("Velocity X"), name});
           if (hasY) conditions[n].push_back({{0.0, 1.0}, group.get<double>("Velocity Y"), name});
-          if (!parallelTo.empty() && !uniform)
-            conditions[n].push_back({{normal[0], normal[1]}, 0.0, name});  // u·n = 0
+          if (!parallelTo.empty()) conditions[n].push_back({{normal[0], normal[1]}, 0.0, name});  // u·n = 0
         }
     } else if (type == "Symmetry") {
       const BoundaryCurve curve = buildBoundaryCurve(mesh, bg);
@@ -238,24 +207,19 @@ void BoundaryConditions::build(const Mesh& mesh) {
   for (size_t i = 0; i < overlapNodes.size(); ++i)
     m_constraints[i] = reduceConditions(conditions[overlapNodes[i]], mesh, overlapNodes[i]);
 
-  // Traction and uniform-normal-velocity edges: those that are an edge of one of this rank's cells.
-  if (!tractionGroups.empty() || !uniformGroups.empty()) {
+  // Traction edges: those that are an edge of one of this rank's cells.
+  if (!tractionGroups.empty()) {
     const int npc = nodesPerCell(mesh.cellType);
     std::unordered_set<GO> myEdges;
     for (GO c : dofMap.cells())
       for (int a = 0; a < npc; ++a)
         myEdges.insert(edgeKey(mesh.cell(c)[a], mesh.cell(c)[(a + 1) % npc], mesh.numNodes()));
-    auto mine = [&](const std::array<GO, 2>& e) { return myEdges.count(edgeKey(e[0], e[1], mesh.numNodes())) > 0; };
     for (const auto& [bg, t] : tractionGroups) {
       if (t[0] == 0.0 && t[1] == 0.0) continue;  // free: nothing to assemble
       for (const auto& e : bg->edges)
-        if (mine(e)) m_tractionEdges.push_back({{dofMap.overlapIndex(e[0]), dofMap.overlapIndex(e[1])}, {t[0], t[1]}});
+        if (myEdges.count(edgeKey(e[0], e[1], mesh.numNodes())))
+          m_tractionEdges.push_back({{dofMap.overlapIndex(e[0]), dofMap.overlapIndex(e[1])}, {t[0], t[1]}});
     }
-    for (const UniformGroup& g : uniformGroups)
-      for (const auto& e : g.group->edges)
-        if (mine(e))
-          m_uniformNormalEdges.push_back({{dofMap.overlapIndex(e[0]), dofMap.overlapIndex(e[1])},
-                                          {g.normal[0], g.normal[1]}, g.penaltyFactor});
   }
 }
 

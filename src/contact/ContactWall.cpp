@@ -62,8 +62,7 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
       "node's active segments (the paper's eq. 17-18); Contact Force: N = max(α_n u·n, 0), the normal force the "
       "penalty puts on the node, the normal traction ∫ N_k σ_n ds at convergence (so that under full sliding the "
       "friction force is exactly ν times the normal force; the two differ by the deviatoric normal stress s_nn, "
-      "which is ±k on a yielding rake face; docs/cutting.md); an active node is then also released when it pulls, "
-      "its normal traction α_n u·n / L_k below −Pressure Tolerance, as well as when p < −Pressure Tolerance",
+      "which is ±k on a yielding rake face; docs/cutting.md)",
       Teuchos::tuple<std::string>("Pressure", "Contact Force"), valid.get());
   valid->set("Start Group", "",
              "a Contact Wall with Released Nodes = Free Surface: the boundary group at the wall's upstream end; a Free "
@@ -157,18 +156,7 @@ double ContactWall::violation(int k, const std::vector<double>& p, const std::ve
   const auto& n = m_curve.normals[k];
   const double un = u[k][0] * n[0] + u[k][1] * n[1];
   if (m_active[k] == kSelfDeciding) return -un - penetrationTolerance;  // it leaves the tool: free
-  if (m_active[k] == kActive) {
-    double v = -p[k] - pressureTolerance;  // tension beyond the tolerance
-    if (m_settings.coulombOnContactForce) {
-      // The normal force is α_n u·n here: a node also lets go when it pulls, its normal traction
-      // α_n u·n / (W_k L_k) (L_k half its segments' lengths) below −tolerance.
-      double halfLength = 0.0;
-      for (int o : {previous(k), next(k)})
-        if (o >= 0) halfLength += 0.5 * std::hypot(m_coords[o][0] - m_coords[k][0], m_coords[o][1] - m_coords[k][1]);
-      if (halfLength > 0.0) v = std::max(v, -m_settings.normalPenalty * m_viscosity[k] * un / halfLength - pressureTolerance);
-    }
-    return v;
-  }
+  if (m_active[k] == kActive) return -p[k] - pressureTolerance;          // tension beyond the tolerance
   if (gap(k) > 1e-9 * m_curve.arcLength.back()) return kNone;  // off the tool: the surface update brings it back
   double v = un - penetrationTolerance;                        // moving into the tool
   for (const auto& other : m_cornerNormals[k])  // convex tool corner: into every half-plane

@@ -315,33 +315,6 @@ TEUCHOS_UNIT_TEST(ContactWall, StatusChangesAtTheZoneLimitOneAtATime) {
   TEST_EQUALITY_CONST(unsettled, 1);
 }
 
-TEUCHOS_UNIT_TEST(ContactWall, CoulombOnTheContactForceReleasesANodeThatPulls) {
-  // Node 1 active with p = 1 > 0 (the pressure holds it), but moving off the tool: u·n = −0.001
-  // (n = (0, −1): u_y = 0.001). Its normal traction α_n u·n / L = 100·2·(−0.001)/0.5 = −0.4.
-  const std::vector<double> p = {1.0, 1.0, 1.0};
-  const std::vector<std::array<double, 2>> u = {{0.0, 0.0}, {0.0, 0.001}, {0.0, 0.0}};
-  // The paper's law (Coulomb on the pressure): the pressure decides, the node stays.
-  ContactWall paper = makeWall("Coulomb", 0.2);
-  TEST_EQUALITY_CONST(paper.nextChange(p, u, 1e-3, 1e-4, 4).node, -1);
-  // Coulomb on the contact force: what the tool feels is α_n u·n, a pull: released, with the
-  // tension over the tolerance as its violation.
-  Teuchos::ParameterList list;
-  list.set("Type", "Contact Wall");
-  list.set("Friction Law", "Coulomb");
-  list.set("Friction Coefficient", 0.2);
-  list.set("Coulomb Normal Force", "Contact Force");
-  list.set("Normal Penalty Factor", 100.0);
-  ContactWall wall("bottom", list, bottomMesh(), Geometry::PlaneStrain);
-  wall.setScales({2.0, 2.0, 2.0}, {1.5, 1.5, 1.5});
-  const StatusChange c = wall.nextChange(p, u, 1e-3, 1e-4, 4);
-  TEST_EQUALITY_CONST(c.node, 1);
-  TEST_ASSERT(!c.activate);
-  TEST_FLOATING_EQUALITY(c.violation, 0.4 - 1e-3, 1e-12);
-  // A pull within the tolerance (traction −0.4e-3 > −1e-3) holds it.
-  const std::vector<std::array<double, 2>> barely = {{0.0, 0.0}, {0.0, 1e-6}, {0.0, 0.0}};
-  TEST_EQUALITY_CONST(wall.nextChange(p, barely, 1e-3, 1e-4, 4).node, -1);
-}
-
 TEUCHOS_UNIT_TEST(ContactWall, BadInputNamesTheGroup) {
   Teuchos::ParameterList p;
   p.set("Type", "Contact Wall");

@@ -73,13 +73,6 @@ class Assembler {
   /// all cells that touch it, on every rank alike (the contact penalty scales).
   void nodalCellMaxima(const Vector& xOwned, std::vector<double>& viscosity, std::vector<double>& flowStress) const;
 
-  /// α = κ σ̄(e0)/(3 e0) (× π (r_a + r_b) when axisymmetric) of an edge of a group with Normal
-  /// Velocity = Uniform (bc/BoundaryConditions.hpp): κ times the viscosity of the material's rigid
-  /// zones, the largest it has, so the penalty is stiffer than any cell next to the edge. From the
-  /// current physics (the continuation's stage), not a parameter of the sensitivities: it enters
-  /// the solution only through the jumps d = f/α it leaves, O(1/κ).
-  double uniformNormalPenalty(const UniformNormalEdge& e) const;
-
   /// A Jacobian matrix on this problem's graph, values unset.
   Teuchos::RCP<FECrsMatrix> createJacobian() const;
   /// x imported to the overlap map (scratch, valid until the next call).
@@ -98,10 +91,6 @@ class Assembler {
   /// and v, which gives the rows' derivative a·du when `x` is a direction du.
   void addConstraintRows(const HostView& x, Workset& ws, bool withOffsets = true) const;
   void addTractions(Workset& ws, bool applyConstraints = true) const;
-  /// The penalties ½ α (n·(u_a − u_b))² of the Normal Velocity = Uniform edges, for every
-  /// evaluation type (linear in u, independent of h).
-  template <typename EvalT>
-  void assembleUniformNormalEdges(Workset& ws, bool applyConstraints) const;
   Workset workset(const Vector& xOverlap, const Vector* dxOverlap, Vector* fOverlap, FECrsMatrix* jacobian) const;
 
   /// An owned wall node and the overlap indices of it and its wall neighbours (−1: none).

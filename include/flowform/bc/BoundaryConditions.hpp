@@ -1,9 +1,6 @@
 // Boundary conditions by gmsh physical-group name (docs/theory.md §2, first bullet):
 //   Velocity   — one or both components prescribed ("Velocity X", "Velocity Y"), or the velocity
-//                parallel to a straight group ("Parallel To": u·n = 0, n its normal as made), or
-//                with "Normal Velocity = Uniform" the same u·n at every node of the group, whatever
-//                it is (the group moves off the face as a whole, without turning, and carries no
-//                net normal force: a penalty on the jumps of u·n along its edges)
+//                parallel to a straight group ("Parallel To": u·n = 0, n its normal as made)
 //   Symmetry   — zero normal velocity on a straight boundary of any orientation
 //   Traction   — a given traction vector t̄ ("Traction X", "Traction Y"; default 0 = free)
 // Contact Wall and Free Surface groups are validated and handled elsewhere (contact/,
@@ -50,16 +47,6 @@ struct TractionEdge {
   double traction[2];
 };
 
-/// An edge of a group with Normal Velocity = Uniform: the penalty ½ α (n·(u_a − u_b))² ties the
-/// normal velocities of its two nodes (α = κ μ_max, Assembler). A sum over the group's edges of
-/// pairs of equal and opposite forces: the group's net normal force is zero, its normal velocity
-/// whatever the flow makes it. Assembled by the rank whose cell has the edge.
-struct UniformNormalEdge {
-  LO nodes[2];       ///< overlap-local node indices
-  double normal[2];  ///< n, the Parallel To group's unit normal
-  double penaltyFactor;  ///< κ
-};
-
 /// Element-level part of the constraints: in the node's two momentum rows R = (R_x, R_y),
 /// Single → R_c := 0, R_o := t·R; Full → both := 0. Linear, so it commutes with assembly.
 template <typename Scalar>
@@ -89,7 +76,6 @@ class BoundaryConditions {
   /// Constraint of every overlap node.
   const std::vector<NodeConstraint>& constraints() const { return m_constraints; }
   const std::vector<TractionEdge>& tractionEdges() const { return m_tractionEdges; }
-  const std::vector<UniformNormalEdge>& uniformNormalEdges() const { return m_uniformNormalEdges; }
 
   /// Recomputes what depends on the node positions (the directions of symmetry
   /// constraints) after the mesh's nodes moved; InputError if a Symmetry group is no longer
@@ -116,7 +102,6 @@ class BoundaryConditions {
   const DofMap& m_dofMap;
   std::vector<NodeConstraint> m_constraints;
   std::vector<TractionEdge> m_tractionEdges;
-  std::vector<UniformNormalEdge> m_uniformNormalEdges;
   /// The normals of the groups named by Parallel To, taken from the mesh as first built: a tool
   /// face is rigid, while free-surface updates may move its released nodes off it.
   std::map<std::string, std::array<double, 2>> m_faceNormals;

@@ -57,8 +57,7 @@ struct ContactWallSettings {
   /// released), so no material crosses the wall's segment there (docs/contact.md).
   bool closedCorners = false;
   /// Coulomb Normal Force = Contact Force: the Coulomb bound is ν max(α_n u·n, 0) (the penalty's
-  /// normal force) instead of ν ∫ N_k p⁺ ds, and an active node whose normal force pulls (its
-  /// traction α_n u·n / L_k below −tolerance) is released even where p > 0.
+  /// normal force) instead of ν ∫ N_k p⁺ ds.
   bool coulombOnContactForce = false;
 };
 
