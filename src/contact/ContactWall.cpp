@@ -7,6 +7,7 @@
 
 #include "flowform/contact/ToolCorners.hpp"
 #include "flowform/core/InputError.hpp"
+#include "flowform/core/Log.hpp"
 
 namespace flowform {
 
@@ -100,6 +101,21 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   m_settings.closedCorners = list.get<std::string>("Convex Corners") == "Closed";
   m_settings.coulombOnContactForce = list.get<std::string>("Coulomb Normal Force") == "Contact Force";
   m_settings.upstreamGroup = list.get<std::string>("Start Group");
+  // Entries the law does not read: said, not silently dropped (a law switched by --set keeps the
+  // old law's entries in the file, so a warning, not an error).
+  {
+    const FrictionLawInfo& info = frictionLaws()[m_settings.law];
+    const std::string where = "Boundary Conditions/" + group + ": Friction Law = " + info.name;
+    for (const char* entry : {"Friction Coefficient", "Coulomb Normal Force"})
+      if (!info.usesFrictionCoefficient && params.isParameter(entry))
+        warn() << where << " does not use '" << entry << "' (ignored)\n";
+    if (!info.usesShearFactor && params.isParameter("Shear Factor"))
+      warn() << where << " does not use 'Shear Factor' (ignored)\n";
+    if (info.usesShearFactor && !params.isParameter("Shear Factor"))
+      warn() << where << " uses 'Shear Factor', which is not given: m = 0, no friction from it\n";
+    if (info.usesFrictionCoefficient && !params.isParameter("Friction Coefficient"))
+      warn() << where << " uses 'Friction Coefficient', which is not given: ν = 0, no friction from it\n";
+  }
   if (m_settings.releasedFreeSurface && m_settings.upstreamGroup.empty())
     throw InputError("Boundary Conditions/" + group + "/Start Group: Released Nodes = Free Surface needs the "
                      "boundary group at the wall's upstream end");

@@ -185,3 +185,9 @@ if(MPIEXEC_EXECUTABLE)
   flowform_exit_test(bad_input_inverted_cell_np2 CASE inverted.xml NP 2
     CONTAINS "inverted")
 endif()
+
+# Entries the friction law does not read are said on stderr (a warning, exit 0: a law switched by
+# --set keeps the old law's entries), and so is a law's parameter left at its default 0.
+flowform_exit_test(warn_friction_entries_the_law_ignores CASE contact_small.xml STATUS 0 CONVERGED
+  SET "Boundary Conditions/top/Friction Law=Tresca"
+  CONTAINS "warning" "top" "does not use 'Friction Coefficient'" "uses 'Shear Factor', which is not given")
