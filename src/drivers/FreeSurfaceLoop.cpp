@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
@@ -46,7 +47,7 @@ void FreeSurfaceReport::report(nlohmann::json& summary) const {
                              {"flow_angle", flowAngle},     {"move", move},
                              {"seconds", seconds},          {"motion_seconds", motionSeconds},
                              {"resolve_seconds", resolveSeconds}, {"grazing_contacts", grazingContacts},
-                             {"history", history}};
+                             {"plain_fallbacks", plainFallbacks}, {"history", history}};
   if (!message.empty()) summary["free_surface"]["message"] = message;
 }
 
@@ -57,6 +58,7 @@ void FreeSurfaceReport::continueFrom(const FreeSurfaceReport& earlier) {
   seconds += earlier.seconds;
   motionSeconds += earlier.motionSeconds;
   resolveSeconds += earlier.resolveSeconds;
+  plainFallbacks += earlier.plainFallbacks;
   // The earlier entries keep their loop number; this loop's is one past the earlier's last.
   int loop = 0;
   nlohmann::json merged = nlohmann::json::array();
@@ -100,6 +102,13 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
   std::vector<double> previousResidual;
   AndersonAcceleration anderson(m_andersonDepth);
   bool restartAnderson = false;  // the last re-solve changed a contact status, or its move was halved
+  // An accelerated loop that makes no progress — its best max flow angle not bettered for
+  // kStallUpdates updates (an exact 2-cycle, or a wander where halved moves keep resetting
+  // Anderson's history) — goes on with the plain update, which does not cycle on the cutting
+  // scene's upset corner (docs/verification.md §9).
+  Relaxation mode = m_relaxation;
+  double bestAngle = std::numeric_limits<double>::infinity();
+  int sinceBest = 0;
   for (;;) {
     auto t = Clock::now();
     FreeSurfaceStep step = m_surfaces.step(mesh, dofMap, hooks.velocities(), walls, geometry, moveLimit);
@@ -108,7 +117,7 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
       break;
     }
     report.motionSeconds += since(t);
-    if (m_relaxation == Relaxation::Aitken || m_relaxation == Relaxation::Anderson) {
+    if (mode == Relaxation::Aitken || mode == Relaxation::Anderson) {
       if (previousResidual.size() == step.residual.size() && step.released.empty()) {
         double num = 0.0, den = 0.0;
         for (size_t i = 0; i < step.residual.size(); ++i) {
@@ -123,12 +132,12 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
       previousResidual = step.residual;
     }
     double stepGain = relaxation;  // the step over the plain update: ω, or Anderson's
-    if (m_relaxation == Relaxation::Anderson)
+    if (mode == Relaxation::Anderson)
       stepGain = andersonStep(mesh, step, anderson, restartAnderson, relaxation);
     else
       step.relax(relaxation);
     std::string newtonFailure;
-    if (m_relaxation == Relaxation::Newton && !(step.maxFlowAngle <= angleLimit && step.maxMove <= moveLimit)) {
+    if (mode == Relaxation::Newton && !(step.maxFlowAngle <= angleLimit && step.maxMove <= moveLimit)) {
       // With a status change pending (released nodes) the linearization's unknowns differ: plain.
       std::vector<std::array<double, 2>> moves;
       if (!step.released.empty()) newtonFailure = "a contact status changes";
@@ -136,6 +145,16 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
         step.setMoves(moves);
       else log() << "flowform: free surface " << report.iterations << ": no Newton step (" << newtonFailure
                  << "); the plain update instead\n";
+    }
+    if (step.maxFlowAngle < bestAngle) {
+      bestAngle = step.maxFlowAngle;
+      sinceBest = 0;
+    } else if (++sinceBest >= kStallUpdates && (mode == Relaxation::Aitken || mode == Relaxation::Anderson)) {
+      log() << "flowform: free surface " << report.iterations << ": no progress in " << kStallUpdates
+            << " updates (best max |u.n|/|u| " << bestAngle << "); the plain update from here\n";
+      mode = Relaxation::None;
+      relaxation = 1.0;
+      ++report.plainFallbacks;
     }
     report.flowAngle = step.maxFlowAngle;
     report.move = step.maxMove;

@@ -42,6 +42,9 @@ struct FreeSurfaceReport {
   /// Contact nodes the converged state leaves cycling between active and free with a violation
   /// within kGrazing times the status tolerances (they graze the tool).
   int grazingContacts = 0;
+  /// Times an accelerated loop (Aitken, Anderson) made no progress for kStallUpdates updates and
+  /// went on with the plain update.
+  int plainFallbacks = 0;
   nlohmann::json history = nlohmann::json::array();  ///< per iteration: angle, move, Newton, changes
   /// free_surface_iterations and the "free_surface" block of summary.json.
   void report(nlohmann::json& summary) const;
@@ -107,6 +110,9 @@ class FreeSurfaceLoop {
   /// Anderson's step is at most this many times the plain update's (else the plain update).
   static constexpr double kMaxAndersonGain = 10.0;
   static constexpr int kMaxHalvings = 6;  ///< of a move that would invert a cell
+  /// Updates without a better max flow angle after which Aitken or Anderson gives way to the
+  /// plain update (an exact 2-cycle, a wander; the converging runs measured better it every few).
+  static constexpr int kStallUpdates = 15;
   const FreeSurfaces& m_surfaces;
   int m_maxIterations;
   double m_angleTolerance, m_moveTolerance;
