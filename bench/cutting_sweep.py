@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The cutting scene (xml/cutting.xml, docs/cutting.md) over the friction coefficient: per ν the
 chip ratio t/t_c, the shear angle, the tool's forces, the contact length, the balances, the
-specific cutting force against Merchant's, and the derivatives d/dν by DDM (frozen shape and
+specific cutting force against Merchant's, the shear plane's equilibrium at the run's own φ
+(the band's angle and mean stress, python/flowform_tools/shear_plane.py), and the derivatives d/dν by DDM (frozen shape and
 total, through the converged free surfaces) against central finite differences (frozen shape and
 with the surfaces re-converged); the cost of each run.
 
@@ -26,7 +27,7 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import h5io, launcher, machine, plotting, summary, sweep  # noqa: E402
+from flowform_tools import h5io, launcher, machine, plotting, shear_plane, summary, sweep  # noqa: E402
 
 
 def lee_shaffer(nu):
@@ -89,6 +90,12 @@ def run_one(flowform, case, workdir, nu, h, extra, reuse=False):
         row["k"] = k
         row["specific_force"] = f["cutting_force"] / k
         row["specific_drive_force"] = f["drive_force"] / k
+        band = shear_plane.band_state(out)
+        theta = math.degrees(math.atan2(f["thrust_force"], f["drive_force"]))
+        row["band"] = {"angle": band["angle"], "p_over_k": band["p_over_k"], "k": band["k"], "theta": theta,
+                       "p_over_k_plane": shear_plane.normal_stress_ratio(f["shear_angle"], theta),
+                       "drive_over_kt": f["drive_force"] / band["k"],
+                       "drive_over_kt_plane": shear_plane.cutting_force_ratio(f["shear_angle"], theta)}
         row["d"] = {name: derivative(s, name) for name in ("chip_ratio", "cutting_force", "thrust_force",
                                                            "drive_force", "shear_angle")}
     return row
@@ -124,6 +131,23 @@ def table(rows):
         print(f"| {nu} | {fmt(c['ddm_total'])} | {fmt(c['fd_moving'])} | {nu / math.sqrt(1 + nu * nu) - 1:.4f} | "
               f"{-2.0 / (1.0 + nu) ** 2:.4f} | {fmt(F['ddm'])} | {fmt(F['fd'])} | {fmt(F['ddm_total'])} | "
               f"{fmt(F['fd_moving'])} |")
+    print()
+    print("The shear plane at the model's own φ (python/flowform_tools/shear_plane.py): the band read off the strain "
+          "rate, its mean stress p over k = σ̄/√3 there against tan(φ + θ), tan θ = F_t / drive force, and the drive "
+          "force against the plane's cos θ / (sin φ cos(φ + θ)); Lee-Shaffer's and Merchant's planes would carry "
+          "p/k = tan(45°) = 1 and tan(45° + λ/2).")
+    print()
+    print("| ν | φ° (chip ratio) | band angle° | θ° | k (band) | p/k band | tan(φ + θ) | Merchant's plane p/k "
+          "| drive/(k t) | plane's cos θ/(sin φ cos(φ+θ)) |")
+    print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for r in rows:
+        if r["exit"] != 0:
+            continue
+        b, nu = r["band"], r["nu"]
+        merchant_plane = math.tan(math.radians(45.0 + math.degrees(math.atan(nu)) / 2.0))
+        print(f"| {nu} | {r['functionals']['shear_angle']:.2f} | {b['angle']:.2f} | {b['theta']:.2f} | {b['k']:.4f} | "
+              f"{b['p_over_k']:.4f} | {b['p_over_k_plane']:.4f} | {merchant_plane:.4f} | {b['drive_over_kt']:.3f} | "
+              f"{b['drive_over_kt_plane']:.3f} |")
 
 
 def plot(rows, outdir):

@@ -13,6 +13,8 @@ tests/regression/, bench/ and scripts/ do not each carry their own launcher and 
   h5io       solution.h5: mesh and nodal/cell fields (needs h5py and numpy)
   sweep      sweep values ("0,0.1" or "0:0.5:0.1") and sweep.csv
   numerics   observed order of convergence, Richardson extrapolation, relative difference
+  shear_plane  the thin shear plane's equilibrium at any φ (Ernst & Merchant), and the
+             cutting run's primary shear band read off its solution.h5 (angle, p/k)
   machine    machine and binary information printed with benchmark results
   msh        small edits of gmsh 4 ASCII meshes
   plotting   matplotlib (Agg) helpers shared by the plot scripts (needs matplotlib)
@@ -23,7 +25,7 @@ Scripts find the package relative to their own file, without an install step:
     from flowform_tools import launcher
 
 Only the standard library is imported here and by launcher, summary, case, csvio, sweep,
-numerics, machine and msh; h5io and plotting import numpy, h5py and matplotlib (Debian's
+numerics, machine and msh; h5io, plotting and shear_plane.band_state import numpy, h5py and matplotlib (Debian's
 /usr/bin/python3 has them: python3-numpy, python3-h5py, python3-matplotlib).
 """
 import os

@@ -16,6 +16,10 @@ usage: cutting_checks.py FLOWFORM SOURCE_DIR WORKDIR
    - Coulomb on the contact force: F_t/F_c <= ν (the sticking cap can only lower it) and >= 0.9 ν
      (measured 0.978 ν: the nodes near the tip, where the chip barely slides, stick).
    - The shear angle is the chip ratio's (tan φ = t/t_c at α = 0) to 1e-10.
+   - The thin shear plane's mechanics at the model's own φ (Ernst & Merchant's equilibrium, valid
+     at any φ; python/flowform_tools/shear_plane.py): the band in the strain-rate field runs at φ
+     within 2° (measured 25.99° against 25.79°), its mean stress p/k = tan(φ + θ), tan θ = F_t /
+     drive force, within 5 % (measured 0.765 against 0.772).
    - d(t/t_c)/dν < 0 (Merchant and Lee-Shaffer agree on the sign); its total derivative by DDM
      through the converged surfaces equals the FD with re-converged surfaces to 1 % (measured
      0.006 %; the FD's own error: surfaces re-converged to 1e-4 of the case's tolerances over a
@@ -33,7 +37,8 @@ usage: cutting_checks.py FLOWFORM SOURCE_DIR WORKDIR
    y = 3.3 instead of separating at 1.4; with Aitken's relaxation 0.5948 and 0.5859; the corner
    over starts 0.7 ... 1.4 moves by 0.06 of 1.7), and both lie below the thin-shear-zone value 1
    (this scene's chip is thicker than theirs). The start 1.4 needs more updates (measured 60,
-   Aitken 77): its cap is raised to 150.
+   Aitken 77): its cap is raised to 150. From the start 1.0, the shear plane's mechanics as in 1.
+   (measured: the band at 31.27° against φ = 30.95°, p/k 0.586 against tan φ = 0.600).
 3. Rake angle α = 10° (the chip outlet normal to the rake, the chip leaving parallel to it:
    chip_outlet `Parallel To = rake`): at ν = 0 the rake carries no friction, so the tool's force
    is normal to the face, F_t/F_c = −tan α, to 1e-8 (measured −0.17633 against −0.17633); at
@@ -64,7 +69,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import checks, launcher, summary  # noqa: E402
+from flowform_tools import checks, launcher, shear_plane, summary  # noqa: E402
 
 NO_FILES = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
 SENSITIVITY = ["Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true",
@@ -84,6 +89,31 @@ def balances(f, label):
     failed += checks.check(abs(f["chip_flux"] - 1.0) <= 5e-3, f"{label} mass: chip flux {f['chip_flux']:.6f} (t = 1)")
     failed += checks.check(abs(power) <= 1e-8 and abs(force) <= 1e-8,
                     f"{label} balances: power {power:.1e}, force {force:.1e} (relative)")
+    return failed
+
+
+def shear_plane_mechanics(run, f, label):
+    """The thin shear plane's equilibrium at the run's own shear angle (shear_plane.py, docs/cutting.md
+    §5.6): the band read off the strain-rate field runs at the chip ratio's φ (within 2°: the band's
+    cells are 0.025-0.1 wide at 0.4-1.2 from the tip, measured within 0.6°), and its mean stress is
+    the plane's normal stress, p/k = tan(φ + θ) with tan θ = F_t / drive force, within 5 % (measured
+    within 2.4 % over ν = 0, 0.2, β = 0.02, Q1 cells, h = 0.07; p/k varies by up to 5 % between the
+    band's levels). The band's stress is that of the model's φ, not of the theories': a plane at
+    Lee-Shaffer's or Merchant's φ would carry p/k = 1 or 1.22 at ν = 0.2 (measured 0.765), 1 at
+    ν = 0 (measured 0.586)."""
+    failed = 0
+    band = shear_plane.band_state(run)
+    phi = f["shear_angle"]
+    theta = math.degrees(math.atan2(f["thrust_force"], f["drive_force"]))
+    expected = shear_plane.normal_stress_ratio(phi, theta)
+    failed += checks.check(abs(band["angle"] - phi) <= 2.0,
+                           f"{label}: the band runs at {band['angle']:.2f}°, the chip ratio's φ = {phi:.2f}°")
+    failed += checks.check(abs(band["p_over_k"] - expected) <= 0.05 * expected,
+                           f"{label}: the band's p/k = {band['p_over_k']:.4f}, tan(φ + θ) = {expected:.4f} "
+                           f"(θ = {theta:.2f}°, k = {band['k']:.4f})")
+    plane = shear_plane.cutting_force_ratio(phi, theta)
+    print(f"     {label}: drive force / (k t) = {f['drive_force'] / band['k']:.4f}, the plane's "
+          f"cos θ / (sin φ cos(φ + θ)) = {plane:.4f} (reported, not checked: the work outside the plane)")
     return failed
 
 
@@ -109,6 +139,7 @@ def main():
         phi = math.degrees(math.atan(f["chip_ratio"]))
         failed += checks.check(abs(phi - f["shear_angle"]) <= 1e-10,
                         f"ν = 0.2: shear angle {f['shear_angle']:.4f} = atan(t/t_c = {f['chip_ratio']:.4f})")
+        failed += shear_plane_mechanics(run1, f, "ν = 0.2")
         c, F = fd_entry(s, "chip_ratio"), fd_entry(s, "cutting_force")
         ct, cf = c.get("ddm_total_shape"), c.get("fd_moving_shape")
         failed += checks.check(ct is not None and cf is not None and ct < 0.0 and abs(ct - cf) <= 0.01 * abs(cf),
@@ -134,8 +165,9 @@ def main():
 
     ratios = {}
     for tc in ("1.0", "1.4"):
-        status, s = solve(flowform, case, os.path.join(work, f"nu_0_tc{tc}"),
-                          NO_FILES + ["Error Estimation/Method=None",
+        run = os.path.join(work, f"nu_0_tc{tc}")
+        status, s = solve(flowform, case, run,
+                          (NO_FILES if tc != "1.0" else []) + ["Error Estimation/Method=None",
                                       "Boundary Conditions/rake/Friction Coefficient=0", f"Mesh/Geo Parameters/tc={tc}",
                                       "Free Surface/Maximum Iterations=150"])
         f = s.get("functionals") or {}
@@ -146,6 +178,8 @@ def main():
         failed += checks.check(abs(f["thrust_force"]) <= 1e-10 * f["cutting_force"],
                         f"ν = 0, start {tc}: F_t = {f['thrust_force']:.2e}, F_c = {f['cutting_force']:.4f}")
         failed += balances(f, f"ν = 0, start {tc}")
+        if tc == "1.0":
+            failed += shear_plane_mechanics(run, f, "ν = 0")
     if len(ratios) == 2:
         failed += checks.check(abs(ratios["1.0"] - ratios["1.4"]) <= 0.03 and max(ratios.values()) < 1.0,
                         f"ν = 0: chip ratio {ratios['1.0']:.4f} (start 1.0), {ratios['1.4']:.4f} (start 1.4)")
