@@ -39,6 +39,17 @@ usage: cutting_checks.py FLOWFORM SOURCE_DIR WORKDIR
    (this scene's chip is thicker than theirs). The start 1.4 needs more updates (measured 60,
    Aitken 77): its cap is raised to 150. From the start 1.0, the shear plane's mechanics as in 1.
    (measured: the band at 31.27° against φ = 30.95°, p/k 0.586 against tan φ = 0.600).
+2b. Lee-Shaffer's own geometry held (ν = 0; the .geo's start: a chip of thickness t = 1 leaving
+   parallel to the rake, a sharp corner at (−t, t); no free surfaces, the chip back and the top
+   traction-free): the solver reproduces the thin-shear-zone mechanics there — the band at 45°
+   within 2° (measured 44.21°; 44.4-44.6° on meshes refined once or at the corner, and at n =
+   200), its mean stress p/k = 1 within 8 % (measured 0.944; 0.948-0.960 on those variants: the
+   fan at the corner), the drive force Merchant's 2 k t within 5 % (measured 2.069; 1.2-3.6 % on
+   the variants) — but the workpiece ahead of the plane is at yield (σ_xx = −2k, the theory's own
+   state at φ = 45°) and, viscoplastic, flows up through the top surface near the corner: at
+   least 3 % of the layer's flux (measured 7.2 %; 6.5 % at h = 0.05, 6.0 % with hc/4, 5.0 % at
+   n = 200, 12.6 % at n = 10, 7.1 % with e0 = 1e-4). That flow is why the free-surface loop leaves this geometry for the
+   φ ≈ 31° member (docs/cutting.md §3).
 3. Rake angle α = 10° (the chip outlet normal to the rake, the chip leaving parallel to it:
    chip_outlet `Parallel To = rake`): at ν = 0 the rake carries no friction, so the tool's force
    is normal to the face, F_t/F_c = −tan α, to 1e-8 (measured −0.17633 against −0.17633); at
@@ -69,7 +80,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import checks, launcher, shear_plane, summary  # noqa: E402
+from flowform_tools import case as cases, checks, csvio, launcher, shear_plane, summary  # noqa: E402
 
 NO_FILES = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
 SENSITIVITY = ["Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true",
@@ -114,6 +125,38 @@ def shear_plane_mechanics(run, f, label):
     plane = shear_plane.cutting_force_ratio(phi, theta)
     print(f"     {label}: drive force / (k t) = {f['drive_force'] / band['k']:.4f}, the plane's "
           f"cos θ / (sin φ cos(φ + θ)) = {plane:.4f} (reported, not checked: the work outside the plane)")
+    return failed
+
+
+def lee_shaffer_geometry(flowform, case, work):
+    """Item 2b of the docstring: the .geo's start (Lee-Shaffer's chip at ν = 0) held fixed."""
+    failed = 0
+    t = 1.0
+
+    def hold(root):
+        cases.set_group(root, "chip_back", [("Type", "string", "Traction")])
+        cases.set_group(root, "rake", [("Type", "string", "Contact Wall"), ("Friction Law", "string", "Coulomb"),
+                                       ("Friction Coefficient", "double", "0.0"),
+                                       ("Coulomb Normal Force", "string", "Contact Force")])
+    os.makedirs(work, exist_ok=True)
+    held = cases.Case(case).variant(os.path.join(work, "lee_shaffer_geometry.xml"), hold)
+    run = os.path.join(work, "lee_shaffer_geometry")
+    status, s = solve(flowform, held, run, ["Error Estimation/Method=None"])
+    f = s.get("functionals") or {}
+    failed += checks.check(status == 0 and s.get("free_surface_iterations") in (None, 0),
+                           f"Lee-Shaffer's geometry held, ν = 0: exit {status}")
+    if status != 0:
+        return failed
+    band = shear_plane.band_state(run, t)
+    failed += checks.check(abs(band["angle"] - 45.0) <= 2.0, f"Lee-Shaffer's geometry: the band at {band['angle']:.2f}° (45°)")
+    failed += checks.check(abs(band["p_over_k"] - 1.0) <= 0.08, f"Lee-Shaffer's geometry: p/k = {band['p_over_k']:.4f} (1)")
+    specific = f["drive_force"] / (band["k"] * t)
+    failed += checks.check(abs(specific - 2.0) <= 0.05 * 2.0,
+                           f"Lee-Shaffer's geometry: drive force / (k t) = {specific:.4f} (Merchant's 2 at ν = 0)")
+    rises = csvio.integral(run, "chip_back", "u_n", weight=lambda row: 1.0 if row["y"] <= t + 1e-9 else 0.0)
+    failed += checks.check(rises >= 0.03 * t,
+                           f"Lee-Shaffer's geometry: the workpiece ahead flows up through its top surface, "
+                           f"{rises:.4f} of the layer's flux {t} (it is at yield there)")
     return failed
 
 
@@ -183,6 +226,8 @@ def main():
     if len(ratios) == 2:
         failed += checks.check(abs(ratios["1.0"] - ratios["1.4"]) <= 0.03 and max(ratios.values()) < 1.0,
                         f"ν = 0: chip ratio {ratios['1.0']:.4f} (start 1.0), {ratios['1.4']:.4f} (start 1.4)")
+
+    failed += lee_shaffer_geometry(flowform, case, work)
 
     alpha = 10.0
     for nu in (0.0, 0.2):
