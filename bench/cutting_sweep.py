@@ -28,6 +28,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 from flowform_tools import h5io, launcher, machine, plotting, shear_plane, summary, sweep  # noqa: E402
+from flowform_tools.tables import markdown  # noqa: E402
 
 
 def lee_shaffer(nu):
@@ -120,34 +121,34 @@ def table(rows):
               f"{f['contact_length']:.3f} | {f['chip_flux']:.4f} | {r['power_residual']:.1e} | {r['k']:.4f} | "
               f"{r['specific_force']:.3f} | {r['specific_drive_force']:.3f} | {merchant_force(r['nu']):.3f} |")
     print()
-    print("| ν | d(t/t_c)/dν total DDM | FD re-converged | Merchant | Lee-Shaffer | dF_c/dν frozen DDM | frozen FD "
-          "| total DDM | FD re-converged |")
-    print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    body = []
     for r in rows:
         if r["exit"] != 0:
             continue
         c, F = r["d"]["chip_ratio"], r["d"]["cutting_force"]
         nu = r["nu"]
-        print(f"| {nu} | {fmt(c['ddm_total'])} | {fmt(c['fd_moving'])} | {nu / math.sqrt(1 + nu * nu) - 1:.4f} | "
-              f"{-2.0 / (1.0 + nu) ** 2:.4f} | {fmt(F['ddm'])} | {fmt(F['fd'])} | {fmt(F['ddm_total'])} | "
-              f"{fmt(F['fd_moving'])} |")
+        body.append([f"{nu}", fmt(c["ddm_total"]), fmt(c["fd_moving"]), f"{nu / math.sqrt(1 + nu * nu) - 1:.4f}",
+                     f"{-2.0 / (1.0 + nu) ** 2:.4f}", fmt(F["ddm"]), fmt(F["fd"]), fmt(F["ddm_total"]),
+                     fmt(F["fd_moving"])])
+    print(markdown(["ν", "d(t/t_c)/dν total DDM", "FD re-converged", "Merchant", "Lee-Shaffer", "dF_c/dν frozen DDM",
+                    "frozen FD", "total DDM", "FD re-converged"], body, "---:"), end="")
     print()
     print("The shear plane at the model's own φ (python/flowform_tools/shear_plane.py): the band read off the strain "
           "rate, its mean stress p over k = σ̄/√3 there against tan(φ + θ), tan θ = F_t / drive force, and the drive "
           "force against the plane's cos θ / (sin φ cos(φ + θ)); Lee-Shaffer's and Merchant's planes would carry "
           "p/k = tan(45°) = 1 and tan(45° + λ/2).")
     print()
-    print("| ν | φ° (chip ratio) | band angle° | θ° | k (band) | p/k band | tan(φ + θ) | Merchant's plane p/k "
-          "| drive/(k t) | plane's cos θ/(sin φ cos(φ+θ)) |")
-    print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    body = []
     for r in rows:
         if r["exit"] != 0:
             continue
         b, nu = r["band"], r["nu"]
         merchant_plane = math.tan(math.radians(45.0 + math.degrees(math.atan(nu)) / 2.0))
-        print(f"| {nu} | {r['functionals']['shear_angle']:.2f} | {b['angle']:.2f} | {b['theta']:.2f} | {b['k']:.4f} | "
-              f"{b['p_over_k']:.4f} | {b['p_over_k_plane']:.4f} | {merchant_plane:.4f} | {b['drive_over_kt']:.3f} | "
-              f"{b['drive_over_kt_plane']:.3f} |")
+        body.append([f"{nu}", f"{r['functionals']['shear_angle']:.2f}", f"{b['angle']:.2f}", f"{b['theta']:.2f}",
+                     f"{b['k']:.4f}", f"{b['p_over_k']:.4f}", f"{b['p_over_k_plane']:.4f}", f"{merchant_plane:.4f}",
+                     f"{b['drive_over_kt']:.3f}", f"{b['drive_over_kt_plane']:.3f}"])
+    print(markdown(["ν", "φ° (chip ratio)", "band angle°", "θ°", "k (band)", "p/k band", "tan(φ + θ)",
+                    "Merchant's plane p/k", "drive/(k t)", "plane's cos θ/(sin φ cos(φ+θ))"], body, "---:"), end="")
 
 
 def plot(rows, outdir):

@@ -1,7 +1,11 @@
 """The tables of bench/extrusion_bench.py (markdown): counts, seconds, work–precision and mass
 leak of one case, from the rows extrusion_bench.py builds (or reads back with --report)."""
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from flowform_tools.tables import markdown  # noqa: E402
 
 
 def fmt(v, form="{:.3g}"):
@@ -12,11 +16,6 @@ def fmt(v, form="{:.3g}"):
     return form.format(v)
 
 
-def markdown(header, rows):
-    out = "| " + " | ".join(header) + " |\n|" + "|".join("---" for _ in header) + "|\n"
-    for r in rows:
-        out += "| " + " | ".join(r) + " |\n"
-    return out
 
 
 def count_table(rows):

@@ -17,6 +17,7 @@ tests/regression/, bench/ and scripts/ do not each carry their own launcher and 
              cutting run's primary shear band read off its solution.h5 (angle, p/k)
   machine    machine and binary information printed with benchmark results
   msh        small edits of gmsh 4 ASCII meshes
+  tables     markdown tables of the benchmarks' reports
   plotting   matplotlib (Agg) helpers shared by the plot scripts (needs matplotlib)
 
 Scripts find the package relative to their own file, without an install step:
@@ -25,7 +26,7 @@ Scripts find the package relative to their own file, without an install step:
     from flowform_tools import launcher
 
 Only the standard library is imported here and by launcher, summary, case, csvio, sweep,
-numerics, machine and msh; h5io, plotting and shear_plane.band_state import numpy, h5py and matplotlib (Debian's
+numerics, machine, msh and tables; h5io, plotting and shear_plane.band_state import numpy, h5py and matplotlib (Debian's
 /usr/bin/python3 has them: python3-numpy, python3-h5py, python3-matplotlib).
 """
 import os
