@@ -11,6 +11,10 @@ on the rake face, α the rake angle). Resolving R along and across the plane:
     σ_n / k = F_n / F_s = tan(φ + θ)                  (the plane's normal stress, compressive)
     R cos θ / (k t) = cos θ / (sin φ cos(φ + θ))      (the force along the cutting direction)
 
+Differentiated with respect to a parameter h (the friction coefficient), with k held, the last
+one says how the force moves with φ and θ (force_derivative): Merchant's dF_c/dν = 2 k t at
+ν = 0 is its θ term alone, and his d(t/t_c)/dν = −1 is sec²45° times his rule's dφ/dν = −1/2.
+
 These hold at **any** φ: they are the plane's equilibrium, before any rule that picks φ
 (Merchant's minimum power, Lee & Shaffer's stress field). The run's φ is its chip ratio's, its θ
 the force the shear zone carries (the drive force and the thrust), and σ_n and k are read in the
@@ -31,6 +35,20 @@ def cutting_force_ratio(phi_deg, theta_deg):
     """The force along the cutting direction over k t: cos θ / (sin φ cos(φ + θ))."""
     p, th = math.radians(phi_deg), math.radians(theta_deg)
     return math.cos(th) / (math.sin(p) * math.cos(p + th))
+
+
+def force_derivative(phi_deg, theta_deg, dphi, dtheta, force):
+    """dF/dh of the force along the cutting direction that a plane at φ passes on, from the
+    derivatives of φ and θ (radians per unit h), with k held: F = k t G(φ, θ), G = cos θ / (sin φ
+    cos(φ + θ)), so dF/dh = F (∂_φ G dφ/dh + ∂_θ G dθ/dh) / G, where
+
+        ∂_θ G / G = tan(φ + θ) − tan θ,    ∂_φ G / G = tan(φ + θ) − cot φ.
+
+    k t is taken from the force itself (k t = F / G), so the work done off the plane, which the
+    relation leaves out, scales the derivative as it scales the value. At Merchant's φ = 45°,
+    θ = 0, dθ/dν = 1: dF/dν = 2 k t (its ∂_φ G vanishes there)."""
+    p, th = math.radians(phi_deg), math.radians(theta_deg)
+    return force * ((math.tan(p + th) - 1.0 / math.tan(p)) * dphi + (math.tan(p + th) - math.tan(th)) * dtheta)
 
 
 def band_state(outdir, t=1.0, alpha_deg=0.0, levels=(0.3, 0.4, 0.5, 0.6, 0.7), half_width=0.03):
