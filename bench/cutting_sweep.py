@@ -149,6 +149,26 @@ def table(rows):
                      f"{b['drive_over_kt']:.3f}", f"{b['drive_over_kt_plane']:.3f}"])
     print(markdown(["ν", "φ° (chip ratio)", "band angle°", "θ°", "k (band)", "p/k band", "tan(φ + θ)",
                     "Merchant's plane p/k", "drive/(k t)", "plane's cos θ/(sin φ cos(φ+θ))"], body, "---:"), end="")
+    print()
+    print("The derivatives' sizes: the plane's force relation differentiated with the run's own dφ/dν (from the "
+          "total DDM d(t/t_c)/dν) and dθ/dν (from dF_t/dν and d(drive)/dν), against the DDM's d(drive)/dν "
+          "(shear_plane.force_derivative; Merchant's rule has dφ/dν = −1/(2(1+ν²))).")
+    print()
+    body = []
+    for r in rows:
+        d = r.get("d") or {}
+        total = {n: (d.get(n) or {}).get("ddm_total") for n in ("chip_ratio", "drive_force", "thrust_force")}
+        if r["exit"] != 0 or any(v is None for v in total.values()):
+            continue
+        f, nu = r["functionals"], r["nu"]
+        ratio, drive, thrust = f["chip_ratio"], f["drive_force"], f["thrust_force"]
+        dphi = total["chip_ratio"] / (1.0 + ratio * ratio)
+        dtheta = (total["thrust_force"] * drive - thrust * total["drive_force"]) / (drive * drive + thrust * thrust)
+        plane = shear_plane.force_derivative(f["shear_angle"], r["band"]["theta"], dphi, dtheta, drive)
+        body.append([f"{nu}", f"{dphi:.4f}", f"{-0.5 / (1.0 + nu * nu):.4f}", f"{dtheta:.4f}", f"{1.0 / (1.0 + nu * nu):.4f}",
+                     f"{total['drive_force']:.4f}", f"{plane:.4f}", f"{100.0 * (plane / total['drive_force'] - 1.0):+.1f} %"])
+    print(markdown(["ν", "dφ/dν (rad)", "Merchant's rule", "dθ/dν", "full sliding", "d(drive)/dν total DDM",
+                    "the plane's", ""], body, "---:"), end="")
 
 
 def plot(rows, outdir):
