@@ -160,11 +160,8 @@ def table(rows):
         total = {n: (d.get(n) or {}).get("ddm_total") for n in ("chip_ratio", "drive_force", "thrust_force")}
         if r["exit"] != 0 or any(v is None for v in total.values()):
             continue
-        f, nu = r["functionals"], r["nu"]
-        ratio, drive, thrust = f["chip_ratio"], f["drive_force"], f["thrust_force"]
-        dphi = total["chip_ratio"] / (1.0 + ratio * ratio)
-        dtheta = (total["thrust_force"] * drive - thrust * total["drive_force"]) / (drive * drive + thrust * thrust)
-        plane = shear_plane.force_derivative(f["shear_angle"], r["band"]["theta"], dphi, dtheta, drive)
+        nu = r["nu"]
+        dphi, dtheta, plane = shear_plane.run_derivatives(r["functionals"], total)
         body.append([f"{nu}", f"{dphi:.4f}", f"{-0.5 / (1.0 + nu * nu):.4f}", f"{dtheta:.4f}", f"{1.0 / (1.0 + nu * nu):.4f}",
                      f"{total['drive_force']:.4f}", f"{plane:.4f}", f"{100.0 * (plane / total['drive_force'] - 1.0):+.1f} %"])
     print(markdown(["ν", "dφ/dν (rad)", "Merchant's rule", "dθ/dν", "full sliding", "d(drive)/dν total DDM",

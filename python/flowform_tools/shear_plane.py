@@ -51,6 +51,18 @@ def force_derivative(phi_deg, theta_deg, dphi, dtheta, force):
     return force * ((math.tan(p + th) - 1.0 / math.tan(p)) * dphi + (math.tan(p + th) - math.tan(th)) * dtheta)
 
 
+def run_derivatives(f, d):
+    """(dφ/dν, dθ/dν, the plane's d(drive)/dν) of a run at α = 0 from its functionals f (chip_ratio,
+    shear_angle, drive_force, thrust_force) and their derivatives d (the same names): φ = atan(t/t_c)
+    gives dφ = d(t/t_c) / (1 + (t/t_c)²), θ = atan(F_t / D) gives dθ = (dF_t D − F_t dD) / (D² + F_t²),
+    and force_derivative the plane's dD from them."""
+    ratio, drive, thrust = f["chip_ratio"], f["drive_force"], f["thrust_force"]
+    dphi = d["chip_ratio"] / (1.0 + ratio * ratio)
+    dtheta = (d["thrust_force"] * drive - thrust * d["drive_force"]) / (drive * drive + thrust * thrust)
+    theta = math.degrees(math.atan2(thrust, drive))
+    return dphi, dtheta, force_derivative(f["shear_angle"], theta, dphi, dtheta, drive)
+
+
 def band_state(outdir, t=1.0, alpha_deg=0.0, levels=(0.3, 0.4, 0.5, 0.6, 0.7), half_width=0.03):
     """The primary shear band of a converged cutting run, read from its solution.h5.
 

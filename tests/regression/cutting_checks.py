@@ -138,14 +138,10 @@ def shear_plane_derivative(s, f, label):
     the DDM's own dφ/dν (from d(t/t_c)/dν) and dθ/dν (from dF_t/dν and the drive force's) within
     10 % (measured 1.9 %; 0.3-6.8 % over the ν sweep, docs/cutting.md §5.6). Merchant's sizes (−1
     and 2 at ν = 0) come from his rule's dφ/dν = −1/2; the model's φ moves less (printed)."""
-    ratio, drive, thrust = f["chip_ratio"], f["drive_force"], f["thrust_force"]
     d = {n: fd_entry(s, n).get("ddm_total_shape") for n in ("chip_ratio", "drive_force", "thrust_force")}
     if any(v is None for v in d.values()):
         return checks.check(False, f"{label}: total DDM derivatives of t/t_c, the drive force and F_t: {d}")
-    dphi = d["chip_ratio"] / (1.0 + ratio * ratio)  # φ = atan(t/t_c) at α = 0
-    dtheta = (d["thrust_force"] * drive - thrust * d["drive_force"]) / (drive * drive + thrust * thrust)
-    theta = math.degrees(math.atan2(thrust, drive))
-    plane = shear_plane.force_derivative(f["shear_angle"], theta, dphi, dtheta, drive)
+    dphi, dtheta, plane = shear_plane.run_derivatives(f, d)
     nu = 0.2
     return checks.check(abs(plane - d["drive_force"]) <= 0.1 * abs(d["drive_force"]),
                         f"{label}: d(drive force)/dν total DDM {d['drive_force']:.4f}, the plane's {plane:.4f} "
