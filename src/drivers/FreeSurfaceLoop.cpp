@@ -197,7 +197,8 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
           break;
         } catch (const InputError& e) {
           if (halvings == kMaxHalvings) throw;
-          log() << "flowform: free surface " << report.iterations << ": the move inverts a cell; halved\n";
+          log() << "flowform: free surface " << report.iterations << ": the move inverts a cell; halved (" << e.what()
+                << ")\n";
           for (auto& d : step.displacement) d = {0.5 * d[0], 0.5 * d[1]};
         }
       }
