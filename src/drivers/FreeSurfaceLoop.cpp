@@ -105,7 +105,7 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
   // An accelerated loop that makes no progress — its best max flow angle not bettered for
   // kStallUpdates updates (an exact 2-cycle, or a wander where halved moves keep resetting
   // Anderson's history) — goes on with the plain update, which does not cycle on the cutting
-  // scene's upset corner (docs/verification.md §9).
+  // scene's chip corner (docs/verification.md §9).
   Relaxation mode = m_relaxation;
   double bestAngle = std::numeric_limits<double>::infinity();
   int sinceBest = 0;

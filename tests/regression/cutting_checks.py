@@ -301,7 +301,7 @@ def main():
         failed += checks.check(refined is not None and estimate is not None,
                                f"free chip: t/t_c = {f['chip_ratio']:.4f} +- {estimate}, refined loop {refined} updates")
 
-    # A case where Anderson's relaxation stalls (ν = 0.05: an exact 2-cycle at the upset corner,
+    # A case where Anderson's relaxation stalls (ν = 0.05: an exact 2-cycle at the chip's corner,
     # docs/verification.md §9): the loop falls back to the plain update and converges within the
     # case's cap (measured: the fallback at update 45, converged at 154; without it exit 3).
     status, s = solve(flowform, case, os.path.join(work, "stall_nu0.05"),
