@@ -91,12 +91,7 @@ def run_one(flowform, case, workdir, nu, h, extra, reuse=False):
         row["k"] = k
         row["specific_force"] = f["cutting_force"] / k
         row["specific_drive_force"] = f["drive_force"] / k
-        band = shear_plane.band_state(out)
-        theta = math.degrees(math.atan2(f["thrust_force"], f["drive_force"]))
-        row["band"] = {"angle": band["angle"], "p_over_k": band["p_over_k"], "k": band["k"], "theta": theta,
-                       "p_over_k_plane": shear_plane.normal_stress_ratio(f["shear_angle"], theta),
-                       "drive_over_kt": f["drive_force"] / band["k"],
-                       "drive_over_kt_plane": shear_plane.cutting_force_ratio(f["shear_angle"], theta)}
+        row["band"] = shear_plane.plane_state(out, f)
         row["d"] = {name: derivative(s, name) for name in ("chip_ratio", "cutting_force", "thrust_force",
                                                            "drive_force", "shear_angle")}
     return row

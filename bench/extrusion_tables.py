@@ -1,11 +1,10 @@
 """The tables of bench/extrusion_bench.py (markdown): counts, seconds, work–precision and mass
-leak of one case, from the rows extrusion_bench.py builds (or reads back with --report)."""
+leak of one case, from the rows extrusion_bench.py builds (or reads back with --report).
+Imported by extrusion_bench.py, which has put python/ on the path."""
 import math
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools.tables import markdown  # noqa: E402
+from flowform_tools.tables import markdown
 
 
 def fmt(v, form="{:.3g}"):
@@ -14,8 +13,6 @@ def fmt(v, form="{:.3g}"):
     if isinstance(v, str):
         return v
     return form.format(v)
-
-
 
 
 def count_table(rows):

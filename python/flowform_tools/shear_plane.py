@@ -37,6 +37,26 @@ def cutting_force_ratio(phi_deg, theta_deg):
     return math.cos(th) / (math.sin(p) * math.cos(p + th))
 
 
+def resultant_angle(f):
+    """θ in degrees: the lean of the force the shear zone carries, tan θ = F_t / drive force, from a
+    run's functionals (at α = 0; the straight chip's outlet pushes on the chip, not through the
+    plane, so the drive force, not F_c)."""
+    return math.degrees(math.atan2(f["thrust_force"], f["drive_force"]))
+
+
+def plane_state(outdir, f, t=1.0):
+    """The run's band (band_state) beside the plane's relations at the run's own φ (its
+    shear_angle) and θ (resultant_angle): angle, p_over_k and k of the band; theta;
+    p_over_k_plane = tan(φ + θ); drive_over_kt = drive force / (k t) with the band's k;
+    drive_over_kt_plane = cos θ / (sin φ cos(φ + θ))."""
+    band = band_state(outdir, t)
+    phi, theta = f["shear_angle"], resultant_angle(f)
+    return {"angle": band["angle"], "p_over_k": band["p_over_k"], "k": band["k"], "theta": theta,
+            "p_over_k_plane": normal_stress_ratio(phi, theta),
+            "drive_over_kt": f["drive_force"] / (band["k"] * t),
+            "drive_over_kt_plane": cutting_force_ratio(phi, theta)}
+
+
 def force_derivative(phi_deg, theta_deg, dphi, dtheta, force):
     """dF/dh of the force along the cutting direction that a plane at φ passes on, from the
     derivatives of φ and θ (radians per unit h), with k held: F = k t G(φ, θ), G = cos θ / (sin φ
@@ -59,8 +79,7 @@ def run_derivatives(f, d):
     ratio, drive, thrust = f["chip_ratio"], f["drive_force"], f["thrust_force"]
     dphi = d["chip_ratio"] / (1.0 + ratio * ratio)
     dtheta = (d["thrust_force"] * drive - thrust * d["drive_force"]) / (drive * drive + thrust * thrust)
-    theta = math.degrees(math.atan2(thrust, drive))
-    return dphi, dtheta, force_derivative(f["shear_angle"], theta, dphi, dtheta, drive)
+    return dphi, dtheta, force_derivative(f["shear_angle"], resultant_angle(f), dphi, dtheta, drive)
 
 
 def band_state(outdir, t=1.0, alpha_deg=0.0, levels=(0.3, 0.4, 0.5, 0.6, 0.7), half_width=0.03):

@@ -117,22 +117,20 @@ def shear_plane_mechanics(run, f, label):
     Lee-Shaffer's or Merchant's φ would carry p/k = 1 or 1.22 at ν = 0.2 (measured 0.765), 1 at
     ν = 0 (measured 0.586)."""
     failed = 0
-    band = shear_plane.band_state(run)
-    phi = f["shear_angle"]
-    theta = math.degrees(math.atan2(f["thrust_force"], f["drive_force"]))
-    expected = shear_plane.normal_stress_ratio(phi, theta)
-    failed += checks.check(abs(band["angle"] - phi) <= 2.0,
-                           f"{label}: the band runs at {band['angle']:.2f}°, the chip ratio's φ = {phi:.2f}°")
-    failed += checks.check(abs(band["p_over_k"] - expected) <= 0.05 * expected,
-                           f"{label}: the band's p/k = {band['p_over_k']:.4f}, tan(φ + θ) = {expected:.4f} "
-                           f"(θ = {theta:.2f}°, k = {band['k']:.4f})")
-    plane = shear_plane.cutting_force_ratio(phi, theta)
-    print(f"     {label}: drive force / (k t) = {f['drive_force'] / band['k']:.4f}, the plane's "
-          f"cos θ / (sin φ cos(φ + θ)) = {plane:.4f} (reported, not checked: the work outside the plane)")
+    plane = shear_plane.plane_state(run, f)
+    phi, expected = f["shear_angle"], plane["p_over_k_plane"]
+    failed += checks.check(abs(plane["angle"] - phi) <= 2.0,
+                           f"{label}: the band runs at {plane['angle']:.2f}°, the chip ratio's φ = {phi:.2f}°")
+    failed += checks.check(abs(plane["p_over_k"] - expected) <= 0.05 * expected,
+                           f"{label}: the band's p/k = {plane['p_over_k']:.4f}, tan(φ + θ) = {expected:.4f} "
+                           f"(θ = {plane['theta']:.2f}°, k = {plane['k']:.4f})")
+    print(f"     {label}: drive force / (k t) = {plane['drive_over_kt']:.4f}, the plane's "
+          f"cos θ / (sin φ cos(φ + θ)) = {plane['drive_over_kt_plane']:.4f} (reported, not checked: the work outside "
+          f"the plane)")
     return failed
 
 
-def shear_plane_derivative(s, f, label):
+def shear_plane_derivative(s, f, nu, label):
     """The sizes of the ν derivatives against the thin plane (shear_plane.force_derivative): the
     drive force's total derivative by DDM equals the plane's linearization at the run's φ, θ with
     the DDM's own dφ/dν (from d(t/t_c)/dν) and dθ/dν (from dF_t/dν and the drive force's) within
@@ -142,7 +140,6 @@ def shear_plane_derivative(s, f, label):
     if any(v is None for v in d.values()):
         return checks.check(False, f"{label}: total DDM derivatives of t/t_c, the drive force and F_t: {d}")
     dphi, dtheta, plane = shear_plane.run_derivatives(f, d)
-    nu = 0.2
     return checks.check(abs(plane - d["drive_force"]) <= 0.1 * abs(d["drive_force"]),
                         f"{label}: d(drive force)/dν total DDM {d['drive_force']:.4f}, the plane's {plane:.4f} "
                         f"(dφ/dν = {dphi:.4f} rad, Merchant's {-0.5 / (1 + nu * nu):.4f}; dθ/dν = {dtheta:.4f})")
@@ -203,7 +200,7 @@ def main():
         failed += checks.check(abs(phi - f["shear_angle"]) <= 1e-10,
                         f"ν = 0.2: shear angle {f['shear_angle']:.4f} = atan(t/t_c = {f['chip_ratio']:.4f})")
         failed += shear_plane_mechanics(run1, f, "ν = 0.2")
-        failed += shear_plane_derivative(s, f, "ν = 0.2")
+        failed += shear_plane_derivative(s, f, 0.2, "ν = 0.2")
         c, F = fd_entry(s, "chip_ratio"), fd_entry(s, "cutting_force")
         ct, cf = c.get("ddm_total_shape"), c.get("fd_moving_shape")
         failed += checks.check(ct is not None and cf is not None and ct < 0.0 and abs(ct - cf) <= 0.01 * abs(cf),
