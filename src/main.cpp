@@ -2,8 +2,10 @@
 // Exit status: 0 converged, 2 bad input (nothing written), 3 not converged (results
 // written, flagged in summary.json), 1 anything else that stops the run (an output file that
 // cannot be written, an internal failure): the message says what.
+#include <chrono>
 #include <filesystem>
 #include <mpi.h>
+#include <thread>
 #include <unistd.h>
 #include <iostream>
 #include <string>
@@ -19,6 +21,7 @@
 #include "flowform/drivers/AdaptiveLoop.hpp"
 #include "flowform/drivers/CaseParameters.hpp"
 #include "flowform/drivers/Simulation.hpp"
+#include "flowform/io/ResultDirectory.hpp"
 
 namespace {
 
@@ -49,19 +52,33 @@ void printHelp() {
 
 namespace {
 
-/// The output directory must be a directory we can write, or creatable: its nearest existing
-/// ancestor a writable directory. InputError otherwise (exit 2, before any work).
-void checkOutputDirectory(const std::string& outDir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::path p = fs::absolute(outDir, ec);
-  if (fs::exists(p, ec) && !fs::is_directory(p, ec))
-    throw flowform::InputError("-o '" + outDir + "' exists and is not a directory");
-  while (!fs::exists(p, ec) && p.has_parent_path() && p != p.parent_path()) p = p.parent_path();
-  if (!fs::is_directory(p, ec))
-    throw flowform::InputError("-o '" + outDir + "': '" + p.string() + "' is not a directory, so the output directory cannot be created");
-  if (access(p.c_str(), W_OK | X_OK) != 0)
-    throw flowform::InputError("-o '" + outDir + "': no permission to write in '" + p.string() + "'");
+/// Ends the run for an error caught on this rank, with `status` on every rank and the message
+/// said once. When every rank fails alike (input validated on every rank, or an error
+/// broadcast from rank 0) they all arrive here and meet in a barrier on a communicator of
+/// their own; rank 0 says the message and all leave with `status`. When the barrier does not
+/// complete within a few seconds, some rank is still at work or waiting in a collective for
+/// this one: this rank says the message and MPI_Abort(status) ends every rank. Never a rank
+/// left waiting (README, "Exit status").
+int endWithError(const std::string& message, int status, MPI_Comm errorComm, int rank, int size) {
+  if (size == 1) {
+    std::cerr << message << "\n";
+    return status;
+  }
+  MPI_Request request;
+  MPI_Ibarrier(errorComm, &request);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  int done = 0;
+  while (!done && std::chrono::steady_clock::now() < deadline) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  if (done) {
+    if (rank == 0) std::cerr << message << "\n";
+    return status;
+  }
+  std::cerr << message << " (on rank " << rank << "; stopping the other ranks)\n" << std::flush;
+  MPI_Abort(MPI_COMM_WORLD, status);
+  return status;
 }
 
 }  // namespace
@@ -76,6 +93,8 @@ int main(int argc, char* argv[]) {
   Tpetra::ScopeGuard scope(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   flowform::setLogRank(comm->getRank());
+  MPI_Comm errorComm;  // endWithError's own: its barrier meets no other collective
+  MPI_Comm_dup(MPI_COMM_WORLD, &errorComm);
 
   std::string casePath, outDir;
   std::vector<std::string> overrides;
@@ -85,6 +104,7 @@ int main(int argc, char* argv[]) {
       if (arg == "-o") {
         if (++i >= argc) throw flowform::InputError("-o needs a directory");
         outDir = argv[i];
+        if (outDir.empty()) throw flowform::InputError("-o needs a directory name (it is empty)");
       } else if (arg == "--set") {
         if (++i >= argc) throw flowform::InputError("--set needs Path/To/Param=value");
         overrides.push_back(argv[i]);
@@ -101,7 +121,7 @@ int main(int argc, char* argv[]) {
     if (casePath.empty()) throw flowform::InputError("no case file given (usage: flowform CASE.xml; see --help)");
     if (!std::filesystem::exists(casePath)) throw flowform::InputError("case file '" + casePath + "' does not exist");
     if (outDir.empty()) outDir = "out/" + std::filesystem::path(casePath).stem().string();
-    checkOutputDirectory(outDir);  // before any work: a bad -o must not cost a solve
+    flowform::checkResultDirectory(outDir);  // before any work: a bad -o must not cost a solve
 
     Teuchos::RCP<Teuchos::ParameterList> params;
     try {
@@ -124,14 +144,12 @@ int main(int argc, char* argv[]) {
     if (comm->getRank() == 0) flowform::log() << "flowform: results in " << outDir << "\n";
     return simulation.exitStatus();
   } catch (const flowform::InputError& e) {
-    if (comm->getRank() == 0) std::cerr << "flowform: input error: " << e.what() << "\n";
-    return kExitBadInput;
+    return endWithError(std::string("flowform: input error: ") + e.what(), kExitBadInput, errorComm,
+                        comm->getRank(), comm->getSize());
   } catch (const std::exception& e) {
     // Not the input and not the numerics (those are reported and exit 3): an output that cannot
     // be written, an allocation, a library's failure. Said plainly rather than an abort.
-    // On more ranks the others may wait in a collective for this one: stop them all.
-    std::cerr << "flowform: error: " << e.what() << "\n";
-    if (comm->getSize() > 1) MPI_Abort(MPI_COMM_WORLD, kExitFailure);
-    return kExitFailure;
+    return endWithError(std::string("flowform: error: ") + e.what(), kExitFailure, errorComm, comm->getRank(),
+                        comm->getSize());
   }
 }

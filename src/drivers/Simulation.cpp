@@ -16,6 +16,7 @@
 #include "flowform/drivers/UpdateLinearization.hpp"
 #include "flowform/io/BoundaryCsvWriter.hpp"
 #include "flowform/io/JsonSummary.hpp"
+#include "flowform/io/ResultDirectory.hpp"
 #include "flowform/io/XdmfWriter.hpp"
 #include "flowform/mesh/BoundaryCurve.hpp"
 #include "flowform/mesh/MeshReader.hpp"
@@ -381,13 +382,14 @@ void Simulation::writeOutput(const std::string& outDir) const {
   const ParameterList& output = m_params.sublist("Output");
   const FieldSet fields = gatherFields();
   if (m_comm->getRank() != 0) return;
-  std::filesystem::create_directories(outDir);
+  ResultSet result(outDir);  // written whole, then put in place (io/ResultDirectory.hpp)
+  const std::string& dir = result.stagingPath();
 
-  if (output.get<bool>("Write Solution")) writeXdmf(outDir, "solution", m_mesh, fields);
+  if (output.get<bool>("Write Solution")) writeXdmf(dir, "solution", m_mesh, fields);
   if (output.get<bool>("Boundary CSV"))
     for (const auto& group : m_mesh.boundaries) {
       try {
-        writeBoundaryCsv(outDir, m_mesh, buildBoundaryCurve(m_mesh, group), fields);
+        writeBoundaryCsv(dir, m_mesh, buildBoundaryCurve(m_mesh, group), fields);
       } catch (const std::exception& e) {  // a group that is not one simple curve, or an odd name
         log() << "flowform: no CSV for boundary group '" << group.name << "': " << e.what() << "\n";
       }
@@ -447,7 +449,8 @@ void Simulation::writeOutput(const std::string& outDir) const {
                                                   : "a finite-difference run of the sensitivity check did not converge";
   for (const auto& [key, block] : m_extraSummary.items()) summary[key] = block;
   summary["parameters"] = parameterListToJson(m_params);
-  writeJsonFile(outDir + "/summary.json", summary);
+  writeJsonFile(dir + "/summary.json", summary);
+  result.publish();
 }
 
 }  // namespace flowform

@@ -3,6 +3,7 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 
@@ -26,14 +27,24 @@ Teuchos::RCP<const Teuchos::ParameterList> validMeshParameters() {
       tuple<CellType>(CellType::Triangle3, CellType::Quadrilateral4), pl.get());
   pl->set("Size Factor", 1.0,
           "Multiplies every mesh size of a .geo (gmsh option Mesh.MeshSizeFactor); no effect on "
-          "transfinite curves. Must stay 1 for a .msh.",
-          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(
-              std::numeric_limits<double>::min(), std::numeric_limits<double>::max())));
+          "transfinite curves. Must stay 1 for a .msh. Between 1e-3 and 1e3 (a smaller factor "
+          "asks gmsh for its curves' points by the billion before anything can be counted).",
+          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(1e-3, 1e3)));
   pl->set(
       "Uniform Refinements", 0,
       "Times every cell is split into 4 (gmsh::model::mesh::refine) after reading or meshing.",
       Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, std::numeric_limits<int>::max())));
   pl->set("Verbose", false, "Let gmsh print its log on rank 0.");
+  pl->set("Maximum Cells", 1000000,
+          "The largest mesh flowform makes: a .geo's cell count is estimated from its 1-D mesh "
+          "before the surfaces are meshed, a refinement's exactly, and a larger mesh is refused "
+          "(exit 2, with the estimate). Raise it for a larger mesh the machine can hold (about "
+          "4 kB of memory per cell to solve on).",
+          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(1, std::numeric_limits<int>::max())));
+  pl->set("Time Limit", 120.0,
+          "Seconds gmsh may take to read, mesh and refine the file (it runs in a process of its "
+          "own); past that it is stopped and the run ends with exit 2 naming the file.",
+          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(1e-3, 1e7)));
   Teuchos::ParameterList& geo = pl->sublist(
       "Geo Parameters", false,
       "Numbers handed to a .geo before it is parsed: an entry NAME = v sets the onelab number "
@@ -70,6 +81,8 @@ ReadOptions parseOptions(const Teuchos::ParameterList& given, const std::string&
   opt.sizeFactor = params.get<double>("Size Factor");
   opt.refinements = params.get<int>("Uniform Refinements");
   opt.verbose = params.get<bool>("Verbose");
+  opt.maxCells = params.get<int>("Maximum Cells");
+  opt.timeLimit = params.get<double>("Time Limit");
   const Teuchos::ParameterList& geo = params.sublist("Geo Parameters");
   for (auto it = geo.begin(); it != geo.end(); ++it) {
     const std::string& name = geo.name(it);
@@ -80,6 +93,8 @@ ReadOptions parseOptions(const Teuchos::ParameterList& given, const std::string&
       opt.geoParameters.emplace_back(name, Teuchos::getValue<int>(entry));
     else
       throw InputError("Mesh/Geo Parameters/" + name + " must be a number (type double)");
+    if (!std::isfinite(opt.geoParameters.back().second))
+      throw InputError("Mesh/Geo Parameters/" + name + " must be a finite number");
   }
   // Options that only shape meshing would be silently ignored for a ready-made .msh.
   if (!opt.isGeo && !opt.geoParameters.empty())
@@ -89,6 +104,36 @@ ReadOptions parseOptions(const Teuchos::ParameterList& given, const std::string&
     throw InputError("Mesh/Size Factor is set but '" + opt.path +
                      "' is a .msh file; Size Factor only applies to .geo files (use Uniform "
                      "Refinements)");
+  return opt;
+}
+
+double mesherMemoryLimitBytes(long long maxCells) {
+  return 4.0e9 + 4.0e3 * static_cast<double>(maxCells);
+}
+
+nlohmann::json toJson(const ReadOptions& opt) {
+  nlohmann::json j = {{"path", opt.path},           {"isGeo", opt.isGeo},
+                      {"cellType", static_cast<int>(opt.cellType)},
+                      {"sizeFactor", opt.sizeFactor}, {"refinements", opt.refinements},
+                      {"verbose", opt.verbose},       {"maxCells", opt.maxCells},
+                      {"timeLimit", opt.timeLimit}};
+  j["geoParameters"] = nlohmann::json::array();
+  for (const auto& [name, value] : opt.geoParameters) j["geoParameters"].push_back({name, value});
+  return j;
+}
+
+ReadOptions readOptionsFromJson(const nlohmann::json& j) {
+  ReadOptions opt;
+  opt.path = j.at("path").get<std::string>();
+  opt.isGeo = j.at("isGeo").get<bool>();
+  opt.cellType = static_cast<CellType>(j.at("cellType").get<int>());
+  opt.sizeFactor = j.at("sizeFactor").get<double>();
+  opt.refinements = j.at("refinements").get<int>();
+  opt.verbose = j.at("verbose").get<bool>();
+  opt.maxCells = j.at("maxCells").get<long long>();
+  opt.timeLimit = j.at("timeLimit").get<double>();
+  for (const auto& p : j.at("geoParameters"))
+    opt.geoParameters.emplace_back(p.at(0).get<std::string>(), p.at(1).get<double>());
   return opt;
 }
 

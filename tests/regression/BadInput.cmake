@@ -68,13 +68,17 @@ flowform_exit_test(regression_good_channel_small CASE channel_small.xml STATUS 0
 # --- the output directory: checked before any work (a solve is not lost to a bad -o) ------------
 flowform_exit_test(bad_input_outdir_is_a_file CASE channel_small.xml OUTDIR_IS_A_FILE
   CONTAINS "exists and is not a directory")
-# An output that cannot be written after the solve (summary.json is a directory): not bad input
-# and not the numerics, so exit 1 with the file named, not an abort.
-flowform_exit_test(output_unwritable_summary CASE channel_small.xml STATUS 1 SUMMARY_IS_A_DIRECTORY
-  CONTAINS "flowform: error:" "summary.json")
-# The same on 2 ranks: the failing rank stops the other (MPI_Abort), so the run ends, exit 1.
-flowform_exit_test(output_unwritable_summary_np2 CASE channel_small.xml STATUS 1 SUMMARY_IS_A_DIRECTORY NP 2
-  CONTAINS "flowform: error:" "summary.json")
+# A result the run could not put in place (summary.json is a directory) is found before the solve:
+# exit 2, the directory left as it was.
+flowform_exit_test(bad_input_outdir_summary_is_a_directory CASE channel_small.xml SUMMARY_IS_A_DIRECTORY
+  CONTAINS "summary.json" "not a regular file")
+flowform_exit_test(bad_input_outdir_summary_is_a_directory_np2 CASE channel_small.xml SUMMARY_IS_A_DIRECTORY NP 2
+  CONTAINS "summary.json" "not a regular file")
+# A directory that cannot be created (under /proc, where access() says yes to root), an empty name.
+flowform_exit_test(bad_input_outdir_under_proc CASE channel_small.xml ARGS -o /proc/flowform_out
+  CONTAINS "/proc/flowform_out" "cannot be created")
+flowform_exit_test(bad_input_outdir_empty CASE channel_small.xml ARGS -o @EMPTY@
+  CONTAINS "-o needs a directory name")
 
 # --- the case file -----------------------------------------------------------------------------
 flowform_exit_test(bad_input_malformed_xml CASE malformed.xml
@@ -191,3 +195,74 @@ endif()
 flowform_exit_test(warn_friction_entries_the_law_ignores CASE contact_small.xml STATUS 0 CONVERGED
   SET "Boundary Conditions/top/Friction Law=Tresca"
   CONTAINS "warning" "top" "does not use 'Friction Coefficient'" "uses 'Shear Factor', which is not given")
+
+# --- meshing: gmsh runs in the mesher process (docs/theory.md §5) ----------------------------------
+# A size gmsh aborts on inside its OpenMP regions (h < 0 where the .geo declares no range): the
+# mesher dies, the run says so with gmsh's message, exit 2 — on 1 and 2 ranks.
+flowform_exit_test(bad_input_gmsh_aborts CASE channel_small.xml
+  SET "Mesh/File=../../data/square_unranged.geo" "Mesh/Geo Parameters/h=-0.1"
+  CONTAINS "square_unranged.geo" "gmsh failed" "Wrong mesh element size")
+flowform_exit_test(bad_input_gmsh_aborts_np2 CASE channel_small.xml NP 2
+  SET "Mesh/File=../../data/square_unranged.geo" "Mesh/Geo Parameters/h=-0.1"
+  CONTAINS "square_unranged.geo" "gmsh failed" "Wrong mesh element size")
+# A curve loop that crosses itself.
+flowform_exit_test(bad_input_geo_self_crossing CASE channel_small.xml
+  SET "Mesh/File=../../data/self_crossing.geo" "Mesh/Element Type=Triangle"
+  CONTAINS "self_crossing.geo")
+# A .geo's declared ranges are input validation (extrusion.geo: h in [1e-4, 1]; cutting.geo:
+# alpha in [-30, 45], which the cutting scene took to a 300 s run of 311 604 dofs).
+flowform_exit_test(bad_input_geo_parameter_below_declared_min CASE ../../../xml/extrusion.xml
+  SET "Mesh/Geo Parameters/h=0"
+  CONTAINS "Mesh/Geo Parameters/h" "[0.0001, 1]")
+flowform_exit_test(bad_input_geo_parameter_above_declared_max CASE ../../../xml/cutting.xml
+  SET "Mesh/Geo Parameters/alpha=89"
+  CONTAINS "Mesh/Geo Parameters/alpha" "[-30, 45]")
+flowform_exit_test(bad_input_geo_parameter_not_a_choice CASE ../../../xml/extrusion.xml
+  SET "Mesh/Geo Parameters/quads=0.5"
+  CONTAINS "Mesh/Geo Parameters/quads" "{0, 1}")
+# A .geo loop that does not end: Mesh/Time Limit stops the mesher.
+flowform_exit_test(bad_input_geo_endless_loop CASE channel_small.xml
+  SET "Mesh/File=../../data/endless_loop.geo" "Mesh/Time Limit=2"
+  CONTAINS "endless_loop.geo" "did not finish within 2 s")
+# Meshes too large to make: estimated before meshing (from the 1-D mesh) or refining (exactly).
+flowform_exit_test(bad_input_mesh_too_many_refinements CASE channel_small.xml
+  SET "Mesh/Uniform Refinements=14"
+  CONTAINS "Maximum Cells" "refining it 14 times")
+flowform_exit_test(bad_input_mesh_size_too_small CASE ../../../xml/die_swell.xml
+  SET "Mesh/Size Factor=0.001"
+  CONTAINS "die_swell.geo" "estimated from its 1-D mesh" "Maximum Cells")
+flowform_exit_test(bad_input_mesh_size_factor_out_of_range CASE channel_small.xml
+  SET "Mesh/Size Factor=1e-300"
+  CONTAINS "Size Factor")
+# Two nodes at one point (a slit).
+flowform_exit_test(bad_input_mesh_coincident_nodes CASE contact_small.xml
+  SET "Mesh/File=../../data/unit_square_slit.msh"
+  CONTAINS "unit_square_slit.msh" "nodes 9 and 11")
+# What a .geo may do (README): shell commands, file writes, files outside its folder are refused.
+flowform_exit_test(bad_input_geo_system_call CASE channel_small.xml
+  SET "Mesh/File=../../data/system_call.geo"
+  CONTAINS "system_call.geo" "line 2" "SystemCall")
+flowform_exit_test(bad_input_geo_printf_to_file CASE channel_small.xml
+  SET "Mesh/File=../../data/printf_to_file.geo"
+  CONTAINS "printf_to_file.geo" "line 4" "redirection")
+flowform_exit_test(bad_input_geo_include_outside CASE channel_small.xml
+  SET "Mesh/File=../../data/include_outside.geo"
+  CONTAINS "include_outside.geo" "outside the folder")
+
+# --- on several ranks, an input error found on one rank only (a boundary-condition conflict at a
+# corner node, checked by the rank that owns it) ends every rank with exit 2 -----------------------
+if(MPIEXEC_EXECUTABLE)
+  foreach(np 2 3)
+    flowform_exit_test(bad_input_conflict_on_one_rank_np${np} CASE channel_small.xml NP ${np}
+      SET "Boundary Conditions/inlet/Velocity Y=1.0"
+      CONTAINS "conflict")
+  endforeach()
+endif()
+
+# --- two runs writing the same output directory at once leave one run's whole result set ---------
+add_test(NAME output_concurrent_runs_same_outdir
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/concurrent_output.py  # h5py: Debian's python
+                 $<TARGET_FILE:flowform> ${FLOWFORM_BAD_INPUT_DIR}/channel_small.xml
+                 ${FLOWFORM_BAD_INPUT_OUT}/concurrent)
+set_tests_properties(output_concurrent_runs_same_outdir PROPERTIES LABELS regression TIMEOUT 300
+                     PROCESSORS 2)

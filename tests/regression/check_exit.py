@@ -5,6 +5,7 @@ usage: check_exit.py --outdir DIR [--status N] [--stderr-contains TEXT ...]
                      [--no-output | --converged | --outdir-is-a-file | --summary-is-a-directory]
                      -- COMMAND ...
 
+  COMMAND                an argument @EMPTY@ is passed as the empty string (CMake drops those)
   --outdir DIR           the output directory the command was given (-o DIR); removed first,
                          so a result from an earlier run cannot pass the check
   --status N             expected exit status (default 2, bad input)
@@ -44,7 +45,8 @@ def main():
                       help="make DIR/summary.json a directory first; it must be left as it was")
     parser.add_argument("--timeout", type=float, default=600)
     args = parser.parse_args(sys.argv[1:split])
-    command = sys.argv[split + 1:]
+    # CMake drops empty arguments from a command: @EMPTY@ stands for one.
+    command = ["" if a == "@EMPTY@" else a for a in sys.argv[split + 1:]]
     if not command:
         sys.exit("check_exit.py: no command after '--'")
 

@@ -1,0 +1,2 @@
+// A .geo that reads a file outside its folder: refused.
+Include "../../meshes/channel.geo";

@@ -1,0 +1,6 @@
+// A .geo that runs a shell command when gmsh parses it: refused before gmsh sees it.
+SystemCall "touch flowform_system_call_ran";
+Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Point(3) = {1, 1, 0, 0.5}; Point(4) = {0, 1, 0, 0.5};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Physical Surface("flow") = {1}; Physical Curve("wall") = {1, 2, 3, 4};
