@@ -39,7 +39,7 @@ Teuchos::RCP<const Teuchos::ParameterList> validMeshParameters() {
           "The largest mesh flowform makes: a .geo's cell count is estimated from its 1-D mesh "
           "before the surfaces are meshed, a refinement's exactly, and a larger mesh is refused "
           "(exit 2, with the estimate). Raise it for a larger mesh the machine can hold (about "
-          "4 kB of memory per cell to solve on).",
+          "6 kB of memory per cell to solve on, more for the finest meshes).",
           Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(1, std::numeric_limits<int>::max())));
   pl->set("Time Limit", 120.0,
           "Seconds gmsh may take to read, mesh and refine the file (it runs in a process of its "
@@ -104,36 +104,6 @@ ReadOptions parseOptions(const Teuchos::ParameterList& given, const std::string&
     throw InputError("Mesh/Size Factor is set but '" + opt.path +
                      "' is a .msh file; Size Factor only applies to .geo files (use Uniform "
                      "Refinements)");
-  return opt;
-}
-
-double mesherMemoryLimitBytes(long long maxCells) {
-  return 4.0e9 + 4.0e3 * static_cast<double>(maxCells);
-}
-
-nlohmann::json toJson(const ReadOptions& opt) {
-  nlohmann::json j = {{"path", opt.path},           {"isGeo", opt.isGeo},
-                      {"cellType", static_cast<int>(opt.cellType)},
-                      {"sizeFactor", opt.sizeFactor}, {"refinements", opt.refinements},
-                      {"verbose", opt.verbose},       {"maxCells", opt.maxCells},
-                      {"timeLimit", opt.timeLimit}};
-  j["geoParameters"] = nlohmann::json::array();
-  for (const auto& [name, value] : opt.geoParameters) j["geoParameters"].push_back({name, value});
-  return j;
-}
-
-ReadOptions readOptionsFromJson(const nlohmann::json& j) {
-  ReadOptions opt;
-  opt.path = j.at("path").get<std::string>();
-  opt.isGeo = j.at("isGeo").get<bool>();
-  opt.cellType = static_cast<CellType>(j.at("cellType").get<int>());
-  opt.sizeFactor = j.at("sizeFactor").get<double>();
-  opt.refinements = j.at("refinements").get<int>();
-  opt.verbose = j.at("verbose").get<bool>();
-  opt.maxCells = j.at("maxCells").get<long long>();
-  opt.timeLimit = j.at("timeLimit").get<double>();
-  for (const auto& p : j.at("geoParameters"))
-    opt.geoParameters.emplace_back(p.at(0).get<std::string>(), p.at(1).get<double>());
   return opt;
 }
 

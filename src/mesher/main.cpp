@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "flowform/core/InputError.hpp"
-#include "flowform/mesh/MeshOptions.hpp"
+#include "flowform/mesh/ReadOptions.hpp"
 #include "flowform/mesh/MeshPacking.hpp"
 #include "flowform/mesher/GmshMesher.hpp"
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "flowform/mesh/Mesh.hpp"
-#include "flowform/mesh/MeshOptions.hpp"
+#include "flowform/mesh/ReadOptions.hpp"
 #include "flowform/mesh/SizeField.hpp"
 
 namespace flowform {
