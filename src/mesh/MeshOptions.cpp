@@ -3,6 +3,7 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 
@@ -74,6 +75,9 @@ ReadOptions parseOptions(const Teuchos::ParameterList& given, const std::string&
   for (auto it = geo.begin(); it != geo.end(); ++it) {
     const std::string& name = geo.name(it);
     const Teuchos::ParameterEntry& entry = geo.entry(it);
+    if (entry.isType<double>() && !std::isfinite(Teuchos::getValue<double>(entry)))
+      throw InputError("Mesh/Geo Parameters/" + name + " = " + Teuchos::toString(Teuchos::getValue<double>(entry)) +
+                       " is not a finite number");
     if (entry.isType<double>())
       opt.geoParameters.emplace_back(name, Teuchos::getValue<double>(entry));
     else if (entry.isType<int>())
