@@ -154,7 +154,8 @@ class CaseChecker {
       std::istringstream is(inner);
       std::string item;
       int k = 0;
-      while (std::getline(is, item, ',')) checkScalar(element, item, path, index, " (element " + std::to_string(k++) + ")");
+      while (std::getline(is, item, ','))
+        checkScalar(element, trim(item), path, index, " (element " + std::to_string(k++) + ")");
       if (inner.back() == ',') checkScalar(element, "", path, index, " (element " + std::to_string(k) + ")");
     }
   }

@@ -71,14 +71,19 @@ TEUCHOS_UNIT_TEST(CaseFile, CleanFileReadsAsTeuchosReadsIt) {
 }
 
 TEUCHOS_UNIT_TEST(CaseFile, EveryShippedCaseReads) {
+  // All but the bad-input fixtures made to be refused (their first comment says "Bad input:").
   int n = 0;
   for (const char* dir : {"../xml", "regression"})
     for (const auto& f : fs::recursive_directory_iterator(dir)) {
-      if (f.path().extension() != ".xml" || f.path().filename() == "malformed.xml") continue;
+      if (f.path().extension() != ".xml") continue;
+      const std::string text = readText(f.path().string());
+      if (text.substr(0, 200).find("Bad input:") != std::string::npos) continue;
       std::string error;
       try {
         const auto ours = readCaseFile(f.path().string());
-        TEST_ASSERT(Teuchos::haveSameValues(*ours, *Teuchos::getParametersFromXmlFile(f.path().string())));
+        // Teuchos cannot read a file with a byte-order mark: compare with the rest.
+        const bool bom = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
+        TEST_ASSERT(Teuchos::haveSameValues(*ours, *Teuchos::getParametersFromXmlString(bom ? text.substr(3) : text)));
       } catch (const InputError& e) {
         error = e.what();
       }
