@@ -46,7 +46,7 @@ flowform_exit_test(bad_input_dead_zone_reference_speed_negative CASE channel_sma
   CONTAINS "Responses/dz" "Reference Speed" "> 0")
 flowform_exit_test(bad_input_dead_zone_fraction_zero CASE channel_small.xml
   SET "Responses/dz/Type=Dead Zone" "Responses/dz/Fraction=0"
-  CONTAINS "Responses/dz" "Fraction" "(0, 1]")
+  CONTAINS "Responses/dz" "Fraction = 0" "in (0, 1")  # no square brackets: they would join CMake list items
 flowform_exit_test(bad_input_start_exponent_zero CASE channel_small.xml
   SET "Solver/Continuation/Start Exponent=0"
   CONTAINS "Solver/Continuation/Start Exponent" "> 0")
@@ -58,7 +58,7 @@ flowform_exit_test(bad_input_update_tolerance_zero CASE channel_small.xml
   CONTAINS "Solver/Update Tolerance" "> 0")
 flowform_exit_test(bad_input_relative_tolerance_one CASE channel_small.xml
   SET "Solver/Relative Residual Tolerance=1"
-  CONTAINS "Solver/Relative Residual Tolerance" "[0, 1)")
+  CONTAINS "Solver/Relative Residual Tolerance = 1" "0, 1)")
 flowform_exit_test(bad_input_normal_penalty_zero CASE contact_small.xml
   SET "Boundary Conditions/top/Normal Penalty Factor=0"
   CONTAINS "Boundary Conditions/top" "Normal Penalty Factor" "> 0")
