@@ -21,6 +21,7 @@
 #include "flowform/drivers/AdaptiveLoop.hpp"
 #include "flowform/drivers/CaseParameters.hpp"
 #include "flowform/drivers/Simulation.hpp"
+#include "flowform/io/CaseFile.hpp"
 #include "flowform/io/ResultDirectory.hpp"
 
 namespace {
@@ -123,12 +124,8 @@ int main(int argc, char* argv[]) {
     if (outDir.empty()) outDir = "out/" + std::filesystem::path(casePath).stem().string();
     flowform::checkResultDirectory(outDir);  // before any work: a bad -o must not cost a solve
 
-    Teuchos::RCP<Teuchos::ParameterList> params;
-    try {
-      params = Teuchos::getParametersFromXmlFile(casePath);
-    } catch (const std::exception& e) {
-      throw flowform::InputError("case file '" + casePath + "' is not a valid XML parameter list: " + e.what());
-    }
+    // Duplicates, ill-typed and non-finite values, a byte-order mark: flowform/io/CaseFile.hpp.
+    Teuchos::RCP<Teuchos::ParameterList> params = flowform::readCaseFile(casePath);
     for (const auto& o : overrides) flowform::applyOverride(*params, o, *flowform::Simulation::validParameters());
 
     const std::string baseDir = std::filesystem::path(casePath).parent_path().string();

@@ -12,6 +12,7 @@
 #include "flowform/assembly/EvaluationTypes.hpp"
 #include "flowform/assembly/SensitivityParameter.hpp"
 #include "flowform/core/InputError.hpp"
+#include "flowform/core/NumberRange.hpp"
 #include "flowform/discretization/CellGeometry.hpp"
 #include "flowform/discretization/ElementLayout.hpp"
 #include "flowform/mesh/BoundaryCurve.hpp"
@@ -36,14 +37,14 @@ Teuchos::RCP<const Teuchos::ParameterList> Responses::validParameters() {
              "Gap, Contact Length, Wall Force)");
   valid->set("Reference Thickness", 1.0,
              "Thickness Ratio, Shear Angle: the thickness t the stream had upstream (cutting: the uncut thickness) "
-             "[length]", Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(1e-300, 1e300)));
+             "[length]", positive());
   valid->set("Rake Angle", 0.0, "Shear Angle: the tool's rake angle α [degrees]",
-             Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(-89.0, 89.0)));
+             inRange(-89.0, 89.0));
   Teuchos::setStringToIntegralParameter<int>("Component", "X", "force component (Boundary Force, Wall Force), coordinate (Boundary Extent)",
                                              Teuchos::tuple<std::string>("X", "Y"), valid.get());
-  valid->set("Fraction", 0.01, "Dead Zone: |u| below this fraction of the reference speed",
-             Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
-  valid->set("Reference Speed", 1.0, "Dead Zone: the process speed (e.g. the ram's) [velocity]");
+  valid->set("Fraction", 0.01, "Dead Zone: |u| below this fraction of the reference speed (0 would count no cell)",
+             inRange(0.0, 1.0, true, false));
+  valid->set("Reference Speed", 1.0, "Dead Zone: the process speed (e.g. the ram's) [velocity]", positive());
   return valid;
 }
 

@@ -7,6 +7,7 @@
 
 #include "flowform/contact/ToolCorners.hpp"
 #include "flowform/core/InputError.hpp"
+#include "flowform/core/NumberRange.hpp"
 #include "flowform/core/Log.hpp"
 
 namespace flowform {
@@ -15,8 +16,6 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
   static Teuchos::RCP<Teuchos::ParameterList> valid;
   if (!valid.is_null()) return valid;
   valid = Teuchos::rcp(new Teuchos::ParameterList("Contact Wall"));
-  using Teuchos::EnhancedNumberValidator;
-  auto nonNegative = Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1e300));
   valid->set("Type", "Contact Wall", "a frictional contact wall (docs/theory.md §2)");
   // The choices are the registered laws (contact/friction/FrictionLaws.hpp), the first the default.
   Teuchos::Array<std::string> names;
@@ -26,21 +25,22 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
     doc += (doc.empty() ? "" : ", ") + law.description;
   }
   Teuchos::setStringToIntegralParameter<int>("Friction Law", names[0], doc, names(), valid.get());
-  valid->set("Friction Coefficient", 0.0, "ν >= 0 (Coulomb, Orowan)", nonNegative);
-  valid->set("Shear Factor", 0.0, "m in [0, 1] (Tresca, Orowan)", Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1.0)));
-  valid->set("Norton Coefficient", 0.0, "α_f K >= 0 (Norton) [stress·(time/length)^q]", nonNegative);
-  valid->set("Norton Exponent", 1.0, "q > 0 (Norton)");
-  valid->set("Norton Regularization", 1e-6, "ε > 0 in (u_t² + ε²)^((q-1)/2) [velocity]");
-  valid->set("Normal Penalty Factor", 1e3, "κ_n > 0: α_n = κ_n μ (× 2π r)");
+  valid->set("Friction Coefficient", 0.0, "ν >= 0 (Coulomb, Orowan)", nonNegative());
+  valid->set("Shear Factor", 0.0, "m in [0, 1] (Tresca, Orowan)", inRange(0.0, 1.0));
+  valid->set("Norton Coefficient", 0.0, "α_f K >= 0 (Norton) [stress·(time/length)^q]", nonNegative());
+  valid->set("Norton Exponent", 1.0, "q > 0 (Norton)", positive());
+  valid->set("Norton Regularization", 1e-6, "ε > 0 in (u_t² + ε²)^((q-1)/2) [velocity]", positive());
+  valid->set("Normal Penalty Factor", 1e3, "κ_n > 0: α_n = κ_n μ (× 2π r)", positive());
   valid->set("Tangential Penalty Factor", 10.0,
              "κ_t > 0: sticking stiffness α_t = κ_t μ (× 2π r); the extrusion's ram force changes by < 3e-4 "
              "for κ_t in [1, 1000], and Newton needs more iterations as κ_t grows "
-             "(docs/extrusion_verification.md §4)");
+             "(docs/extrusion_verification.md §4)",
+             positive());
   valid->set("Penalty Viscosity", 0.0,
              "μ in the penalties: 0 (default) = the largest adjacent cell viscosity, refreshed before every "
              "flow solve; > 0 = this fixed value at every node, so the penalties do not depend on the "
              "solution (docs/sensitivity.md: an external finite-difference check needs that)",
-             nonNegative);
+             nonNegative());
   Teuchos::setStringToIntegralParameter<int>("Initial Status", "Active", "status of every wall node at the start",
                                              Teuchos::tuple<std::string>("Active", "Free"), valid.get());
   Teuchos::setStringToIntegralParameter<int>(

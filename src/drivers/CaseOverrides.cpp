@@ -5,6 +5,7 @@
 
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Strings.hpp"
+#include "flowform/io/CaseFile.hpp"
 
 namespace flowform {
 
@@ -23,6 +24,11 @@ bool parseExactly(const std::string& text, T& value) {
   std::istringstream is(text);
   is >> value;
   return !is.fail() && is.eof();
+}
+
+/// A double written as in the case file (io/CaseFile.hpp): a finite decimal number, no inf/nan.
+bool parseExactly(const std::string& text, double& value) {
+  return parseFiniteDouble(text, value);
 }
 
 bool parseBool(const std::string& text, bool& value) {
@@ -91,7 +97,7 @@ void applyOverride(Teuchos::ParameterList& params, const std::string& assignment
     int v; if (!parseExactly(value, v)) fail("int");
     target->set(name, v);
   } else if (like && like->isType<double>()) {
-    double v; if (!parseExactly(value, v)) fail("double");
+    double v; if (!parseExactly(value, v)) fail("double (a finite decimal number)");
     target->set(name, v);
   } else if (like && like->isType<bool>()) {
     bool v; if (!parseBool(value, v)) fail("bool (true or false)");

@@ -7,6 +7,7 @@
 
 #include "flowform/bc/BoundaryConditions.hpp"
 #include "flowform/core/InputError.hpp"
+#include "flowform/core/NumberRange.hpp"
 #include "flowform/drivers/FreeSurfaceLoop.hpp"
 #include "flowform/drivers/OutputFields.hpp"
 #include "flowform/mesh/MeshReader.hpp"
@@ -20,7 +21,6 @@ namespace flowform {
 
 namespace {
 
-using Teuchos::EnhancedNumberValidator;
 using Teuchos::ParameterList;
 
 /// The entries of `list` whose type differs from the valid one's. Checked before Teuchos'
@@ -68,35 +68,28 @@ std::string joined(const std::vector<std::string>& names) {
   return s;
 }
 
-void requirePositive(const ParameterList& list, const std::string& name, const std::string& where) {
-  const double v = list.get<double>(name);
-  if (!(v > 0.0))
-    throw InputError(where + "/" + name + " must be > 0 (got " + Teuchos::toString(v) + ")");
-}
-
 }  // namespace
 
 Teuchos::RCP<const ParameterList> validCaseParameters() {
   static Teuchos::RCP<ParameterList> valid;
   if (!valid.is_null()) return valid;
   valid = Teuchos::rcp(new ParameterList("flowform"));
-  auto nonNegative = Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1e300));
 
   ParameterList& problem = valid->sublist("Problem", false, "kind of model");
   Teuchos::setStringToIntegralParameter<int>("Geometry", "Plane Strain",
                                              "Plane Strain (per unit depth) or Axisymmetric (x = r, y = z)",
                                              Teuchos::tuple<std::string>("Plane Strain", "Axisymmetric"), &problem);
-  problem.set("Body Force X", 0.0, "f_x, force per unit volume");
-  problem.set("Body Force Y", 0.0, "f_y, force per unit volume");
+  problem.set("Body Force X", 0.0, "f_x, force per unit volume", finiteNumber());
+  problem.set("Body Force Y", 0.0, "f_y, force per unit volume", finiteNumber());
 
   ParameterList& material = valid->sublist("Material", false, "rigid-viscoplastic law (docs/theory.md §1)");
-  material.set("Yield Stress", 1.0, "σ0 >= 0 [stress]", nonNegative);
-  material.set("Rate Constant", 1.0, "γ > 0 [1/time]");
-  material.set("Rate Exponent", 1.0, "n > 0: σ̄ = σ0 + (e/γ)^(1/n)");
-  material.set("Strain Rate Cutoff", 1e-3, "e0 > 0: e_r = sqrt(e² + e0²) [1/time]");
+  material.set("Yield Stress", 1.0, "σ0 >= 0 [stress]", nonNegative());
+  material.set("Rate Constant", 1.0, "γ > 0 [1/time]", positive());
+  material.set("Rate Exponent", 1.0, "n > 0: σ̄ = σ0 + (e/γ)^(1/n)", positive());
+  material.set("Strain Rate Cutoff", 1e-3, "e0 > 0: e_r = sqrt(e² + e0²) [1/time]", positive());
 
   ParameterList& stab = valid->sublist("Stabilization", false, "pressure stabilization");
-  stab.set("Beta", 0.1, "β in τ_K = β h_K² / (2 μ_K); h_K = cell diameter (docs/verification.md)", nonNegative);
+  stab.set("Beta", 0.1, "β in τ_K = β h_K² / (2 μ_K); h_K = cell diameter (docs/verification.md)", nonNegative());
 
   valid->set("Mesh", *validMeshParameters(), "the mesh (gmsh .msh or .geo)");
   // Free-form: one sublist per group. The template documents the entries (--help) and gives
@@ -136,7 +129,7 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
                  "p, the order in h at which the responses' error falls under uniform refinement: 1 where a singular "
                  "corner dominates (the extrusion's die lip), 2 for a smooth solution; the estimate is "
                  "(phi_refined - phi) / (1 - 2^-p)",
-                 Teuchos::rcp(new EnhancedNumberValidator<double>(0.1, 10.0)));
+                 inRange(0.1, 10.0));
   ParameterList& adaptivity = valid->sublist(
       "Adaptivity", false,
       "adaptive meshing to a requested accuracy (docs/theory.md §7): solve, estimate (Two-Level), size the next "
@@ -148,11 +141,11 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   adaptivity.set("Responses", Teuchos::Array<std::string>(),
                  "names of the responses (Boundary Force or Mean Pressure) whose relative error is to be met");
   adaptivity.set("Target Relative Error", 5e-3, "|estimated error| / |value| to reach for every named response",
-                 Teuchos::rcp(new EnhancedNumberValidator<double>(1e-8, 1.0)));
+                 inRange(1e-8, 1.0));
   adaptivity.set("Maximum Cycles", 8, "solve-estimate-remesh cycles at most (the first mesh is cycle 0)",
-                 Teuchos::rcp(new EnhancedNumberValidator<int>(1, 100)));
+                 intInRange(1, 100));
   adaptivity.set("Maximum Dofs", 400000, "no mesh is made with more dofs than this (predicted from the size field)",
-                 Teuchos::rcp(new EnhancedNumberValidator<int>(100, 100000000)));
+                 intInRange(100, 100000000));
   ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (docs/theory.md §2)");
   Teuchos::setStringToIntegralParameter<int>(
       "Status Update", "Certain Iterate",
@@ -164,15 +157,15 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
               "relative residual ||F|| / ||F_0|| at which a re-solve after a status change stops when the next "
               "change is read from it; the state that needs no change is then converged to the Solver tolerances "
               "and checked again. 0: every re-solve to the Solver tolerances",
-              Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1.0)));
+              inRange(0.0, 1.0));
   contact.set("Max Status Changes", 500, "give up (not converged) after this many changes",
-              Teuchos::rcp(new EnhancedNumberValidator<int>(0, 1000000)));
+              intInRange(0, 1000000));
   contact.set("Max Changes Per Node", 4,
               "a node that changed this often keeps its status (no cycling); if it still violates its "
               "criterion the run is reported not converged",
-              Teuchos::rcp(new EnhancedNumberValidator<int>(1, 1000)));
-  contact.set("Pressure Tolerance", 1e-3, "an active node is released when p < -this [stress]", nonNegative);
-  contact.set("Penetration Tolerance", 1e-4, "a free node is activated when u·n > this [velocity]", nonNegative);
+              intInRange(1, 1000));
+  contact.set("Pressure Tolerance", 1e-3, "an active node is released when p < -this [stress]", nonNegative());
+  contact.set("Penetration Tolerance", 1e-4, "a free node is activated when u·n > this [velocity]", nonNegative());
   valid->set("Free Surface", *FreeSurfaceLoop::validParameters(),
              "the loop that makes free surfaces streamlines (docs/theory.md §3); used only when a boundary group is "
              "a Free Surface or a Contact Wall's Released Nodes are Free Surface");
@@ -199,9 +192,6 @@ void validateCase(ParameterList& params) {
     throw InputError("the case has no Mesh/File: name a .msh or .geo file");
   validateSublist(params.sublist("Mesh"), valid.sublist("Mesh"), "Mesh", 0);
 
-  const ParameterList& mat = params.sublist("Material");
-  for (const char* name : {"Rate Constant", "Rate Exponent", "Strain Rate Cutoff"})
-    requirePositive(mat, name, "Material");
   for (const auto& name : params.sublist("Output").get<Teuchos::Array<std::string>>("Cell Fields"))
     if (std::find(cellFieldNames().begin(), cellFieldNames().end(), name) == cellFieldNames().end())
       throw InputError("Output/Cell Fields: unknown field '" + name + "'; allowed: " + joined(cellFieldNames()));

@@ -8,6 +8,7 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/core/InputError.hpp"
+#include "flowform/core/NumberRange.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
 #include "flowform/solvers/AndersonAcceleration.hpp"
@@ -18,12 +19,11 @@ Teuchos::RCP<const Teuchos::ParameterList> FreeSurfaceLoop::validParameters() {
   static Teuchos::RCP<Teuchos::ParameterList> valid;
   if (!valid.is_null()) return valid;
   valid = Teuchos::rcp(new Teuchos::ParameterList("Free Surface"));
-  using Teuchos::EnhancedNumberValidator;
   valid->set("Maximum Iterations", 30, "surface updates at most; then the run is not converged (exit 3)",
-             Teuchos::rcp(new EnhancedNumberValidator<int>(0, 10000)));
+             intInRange(0, 10000));
   valid->set("Flow Angle Tolerance", 1e-4,
              "converged when max |u·n|/|u| over the surface segments (u the segment's mean velocity) is below this",
-             Teuchos::rcp(new EnhancedNumberValidator<double>(1e-14, 1.0)));
+             inRange(1e-14, 1.0));
   Teuchos::setStringToIntegralParameter<int>(
       "Relaxation", "Anderson",
       "None: every update moves the surface nodes onto the streamline of the current flow (the paper's); Aitken: "
@@ -33,10 +33,10 @@ Teuchos::RCP<const Teuchos::ParameterList> FreeSurfaceLoop::validParameters() {
       "docs/theory.md §3)",
       Teuchos::tuple<std::string>("None", "Aitken", "Anderson", "Newton"), valid.get());
   valid->set("Anderson Depth", 5, "Relaxation = Anderson: how many previous updates its step uses",
-             Teuchos::rcp(new EnhancedNumberValidator<int>(1, 50)));
+             intInRange(1, 50));
   valid->set("Move Tolerance", 1e-4,
              "and when the largest node move of the next update is below this fraction of the surface's length",
-             Teuchos::rcp(new EnhancedNumberValidator<double>(1e-14, 1.0)));
+             inRange(1e-14, 1.0));
   return valid;
 }
 

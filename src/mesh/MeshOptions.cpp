@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "flowform/core/InputError.hpp"
+#include "flowform/core/NumberRange.hpp"
 #include "flowform/mesh/MeshReader.hpp"
 
 namespace flowform {
@@ -29,22 +30,22 @@ Teuchos::RCP<const Teuchos::ParameterList> validMeshParameters() {
           "Multiplies every mesh size of a .geo (gmsh option Mesh.MeshSizeFactor); no effect on "
           "transfinite curves. Must stay 1 for a .msh. Between 1e-3 and 1e3 (a smaller factor "
           "asks gmsh for its curves' points by the billion before anything can be counted).",
-          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(1e-3, 1e3)));
+          inRange(1e-3, 1e3));
   pl->set(
       "Uniform Refinements", 0,
       "Times every cell is split into 4 (gmsh::model::mesh::refine) after reading or meshing.",
-      Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, std::numeric_limits<int>::max())));
+      intAtLeast(0));
   pl->set("Verbose", false, "Let gmsh print its log on rank 0.");
   pl->set("Maximum Cells", 1000000,
           "The largest mesh flowform makes: a .geo's cell count is estimated from its 1-D mesh "
           "before the surfaces are meshed, a refinement's exactly, and a larger mesh is refused "
           "(exit 2, with the estimate). Raise it for a larger mesh the machine can hold (about "
           "6 kB of memory per cell to solve on, more for the finest meshes).",
-          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(1, std::numeric_limits<int>::max())));
+          intAtLeast(1));
   pl->set("Time Limit", 120.0,
           "Seconds gmsh may take to read, mesh and refine the file (it runs in a process of its "
           "own); past that it is stopped and the run ends with exit 2 naming the file.",
-          Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(1e-3, 1e7)));
+          positive());
   Teuchos::ParameterList& geo = pl->sublist(
       "Geo Parameters", false,
       "Numbers handed to a .geo before it is parsed: an entry NAME = v sets the onelab number "
@@ -87,14 +88,15 @@ ReadOptions parseOptions(const Teuchos::ParameterList& given, const std::string&
   for (auto it = geo.begin(); it != geo.end(); ++it) {
     const std::string& name = geo.name(it);
     const Teuchos::ParameterEntry& entry = geo.entry(it);
+    if (entry.isType<double>() && !std::isfinite(Teuchos::getValue<double>(entry)))
+      throw InputError("Mesh/Geo Parameters/" + name + " = " + Teuchos::toString(Teuchos::getValue<double>(entry)) +
+                       " is not a finite number");
     if (entry.isType<double>())
       opt.geoParameters.emplace_back(name, Teuchos::getValue<double>(entry));
     else if (entry.isType<int>())
       opt.geoParameters.emplace_back(name, Teuchos::getValue<int>(entry));
     else
       throw InputError("Mesh/Geo Parameters/" + name + " must be a number (type double)");
-    if (!std::isfinite(opt.geoParameters.back().second))
-      throw InputError("Mesh/Geo Parameters/" + name + " must be a finite number");
   }
   // Options that only shape meshing would be silently ignored for a ready-made .msh.
   if (!opt.isGeo && !opt.geoParameters.empty())

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "flowform/core/InputError.hpp"
+#include "flowform/core/NumberRange.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/core/Strings.hpp"
 
@@ -32,7 +33,7 @@ Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
              "converged state, each with its contact-status loop) and report the relative difference (fd_check)");
   valid->set("Finite Difference Step", 2e-4,
              "δ: absolute for ν and m (the paper's Δν = 2e-4), relative to |h| for σ0, γ, n",
-             Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(1e-300, 1.0)));
+             inRange(0.0, 1.0, true, false));
   Teuchos::setStringToIntegralParameter<int>(
       "Jacobian", "Converged",
       "factors for the DDM solves: Converged (K_t assembled and factored at the converged q, one factorization) or "

@@ -11,6 +11,8 @@
 #include <NOX_Solver_LineSearchBased.H>
 #include <NOX_StatusTest_Generic.H>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "flowform/core/NumberRange.hpp"
 #include <nlohmann/json.hpp>
 
 #include "flowform/core/Log.hpp"
@@ -149,13 +151,13 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
   static Teuchos::RCP<Teuchos::ParameterList> valid;
   if (!valid.is_null()) return valid;
   valid = Teuchos::rcp(new Teuchos::ParameterList("Solver"));
-  using Teuchos::EnhancedNumberValidator;
-  auto positive = Teuchos::rcp(new EnhancedNumberValidator<double>(0.0, 1e300));
-  valid->set("Max Newton Iterations", 40, "Newton iterations per continuation stage",
-             Teuchos::rcp(new EnhancedNumberValidator<int>(1, 10000)));
-  valid->set("Absolute Residual Tolerance", 1e-10, "||F||_2 below this is converged", positive);
-  valid->set("Relative Residual Tolerance", 1e-9, "||F||_2 / ||F_0||_2 below this is converged", positive);
-  valid->set("Update Tolerance", 1e-8, "and ||dx||_2 <= this × (||x||_2 + this)", positive);
+  valid->set("Max Newton Iterations", 40, "Newton iterations per continuation stage", intInRange(1, 10000));
+  // Converged when ||F|| <= max(absolute, relative ||F_0||): either may be 0 (not used), and a
+  // relative tolerance of 1 or more would call the start converged.
+  valid->set("Absolute Residual Tolerance", 1e-10, "||F||_2 below this is converged", nonNegative());
+  valid->set("Relative Residual Tolerance", 1e-9, "||F||_2 / ||F_0||_2 below this is converged",
+             inRange(0.0, 1.0, false, true));
+  valid->set("Update Tolerance", 1e-8, "and ||dx||_2 <= this × (||x||_2 + this)", positive());
   Teuchos::setStringToIntegralParameter<int>(
       "Line Search", "Backtrack", "NOX line search: Backtrack (halving on ||F||), Polynomial, Full Step",
       Teuchos::tuple<std::string>("Backtrack", "Polynomial", "Full Step"), valid.get());
@@ -166,16 +168,16 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
       Teuchos::tuple<std::string>("Stress-Velocity", "Exact"), valid.get());
   valid->set("Linear Solver", *validLinearSolverParameters(), "the direct solver of the Newton systems");
   Teuchos::ParameterList& cont = valid->sublist("Continuation", false, "continuation in n and e0");
-  cont.set("Start Exponent", 1.0, "n at the first stage", positive);
-  cont.set("Start Cutoff", 0.1, "e0 at the first stage (if larger than the target's)", positive);
+  cont.set("Start Exponent", 1.0, "n at the first stage", positive());
+  cont.set("Start Cutoff", 0.1, "e0 at the first stage (if larger than the target's)", positive());
   cont.set("Initial Step", 1.0,
            "first step in the continuation parameter λ ∈ (0, 1]; 1 tries the target at once and halves on failure "
            "(docs/verification.md §6)",
-           Teuchos::rcp(new EnhancedNumberValidator<double>(1e-6, 1.0)));
+           inRange(1e-6, 1.0));
   cont.set("Minimum Step", 1.0 / 256, "give up when a failed stage halves the step below this",
-           Teuchos::rcp(new EnhancedNumberValidator<double>(1e-12, 1.0)));
+           inRange(1e-12, 1.0));
   cont.set("Growth Factor", 2.0, "step growth after a stage that took at most 5 Newton iterations",
-           Teuchos::rcp(new EnhancedNumberValidator<double>(1.0, 100.0)));
+           inRange(1.0, 100.0));
   return valid;
 }
 
