@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <filesystem>
+#include <iomanip>
+#include <sstream>
 
 #include <Teuchos_TimeMonitor.hpp>
 #include <nlohmann/json.hpp>
@@ -133,6 +135,7 @@ const SolveReport& Simulation::run() {
   if (!m_report.converged && !m_walls.empty() && firstMinimum > caseMinimum && !budgetWasSpent())
     again(false, "from frictionless walls with every continuation halving");
   m_report.newtonPerSolve = {m_report.newtonIterations};
+  if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) m_report.message += firstSolveHints();
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged && !m_freeSurfaces->empty()) {
@@ -153,6 +156,26 @@ const SolveReport& Simulation::run() {
       m_params.sublist("Error Estimation").get<std::string>("Method") == "Two-Level")
     estimateErrors();
   return m_report;
+}
+
+std::string Simulation::firstSolveHints() const {
+  // Measured on xml/extrusion.xml at ν = 2 on every wall (LOOPS_NOTES.md): Tresca with m = 1 and
+  // h = 0.05 converged; a smaller Minimum Step, 150 Newton iterations, the Exact linearization did not.
+  double nu = 0.0;
+  std::string coulomb;
+  for (const ContactWall& wall : m_walls)
+    if (wall.usesFrictionCoefficient() && wall.settings().frictionCoefficient > nu) {
+      nu = wall.settings().frictionCoefficient;
+      coulomb = wall.name();
+    }
+  std::string hints = ". The first solve failed from each start (zero, walls sticking at rest, frictionless walls). To try: ";
+  if (!coulomb.empty())
+    hints += "a smaller Friction Coefficient (" + (std::ostringstream() << std::setprecision(3) << nu).str() +
+             " on wall '" + coulomb +
+             "'), or Friction Law = Tresca with a Shear Factor <= 1 (the friction stress bounded by the flow stress); ";
+  return hints + "a finer mesh (Mesh/Geo Parameters, Mesh/Uniform Refinements). A smaller "
+                 "Solver/Continuation/Minimum Step, more Solver/Max Newton Iterations or Newton Linearization = "
+                 "Exact may not help (they did not at friction coefficient 2 on the extrusion)";
 }
 
 void Simulation::estimateErrors(const std::vector<std::string>& indicatorResponses) {
