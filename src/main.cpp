@@ -16,6 +16,7 @@
 #include <Tpetra_Core.hpp>
 
 #include "flowform/drivers/CaseOverrides.hpp"
+#include "flowform/core/Budget.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/drivers/AdaptiveLoop.hpp"
@@ -85,6 +86,7 @@ int endWithError(const std::string& message, int status, MPI_Comm errorComm, int
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  flowform::budgetMarkStart();  // Solver/Time Limit counts from here
   // Before Kokkos starts: it answers --help with its own text.
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
@@ -96,6 +98,8 @@ int main(int argc, char* argv[]) {
   flowform::setLogRank(comm->getRank());
   MPI_Comm errorComm;  // endWithError's own: its barrier meets no other collective
   MPI_Comm_dup(MPI_COMM_WORLD, &errorComm);
+  // Progress lines reach a log file or pipe as they are written (a long run shows where it is).
+  std::cout << std::unitbuf;
 
   std::string casePath, outDir;
   std::vector<std::string> overrides;
@@ -129,17 +133,25 @@ int main(int argc, char* argv[]) {
     for (const auto& o : overrides) flowform::applyOverride(*params, o, *flowform::Simulation::validParameters());
 
     const std::string baseDir = std::filesystem::path(casePath).parent_path().string();
-    if (flowform::adaptivityRequested(*params)) {
-      flowform::validateCase(*params);
-      const int status = flowform::runAdaptive(*params, baseDir.empty() ? "." : baseDir, comm, outDir);
-      if (comm->getRank() == 0) flowform::log() << "flowform: results in " << outDir << "\n";
+    flowform::validateCase(*params);  // the Simulation validates its copy again
+    flowform::startBudget(params->sublist("Solver").get<double>("Time Limit"), comm);
+    // Exit 3: the reason on stderr too (it is in summary.json "message"), shown with --quiet.
+    auto finish = [&](int status, const std::string& message) {
+      if (comm->getRank() == 0) {
+        flowform::log() << "flowform: results in " << outDir << "\n";
+        if (status == 3) std::cerr << "flowform: not converged: " << message << "\n";
+      }
       return status;
+    };
+    if (flowform::adaptivityRequested(*params)) {
+      std::string message;
+      const int status = flowform::runAdaptive(*params, baseDir.empty() ? "." : baseDir, comm, outDir, &message);
+      return finish(status, message);
     }
     flowform::Simulation simulation(*params, baseDir.empty() ? "." : baseDir, comm);
     simulation.run();
     simulation.writeOutput(outDir);
-    if (comm->getRank() == 0) flowform::log() << "flowform: results in " << outDir << "\n";
-    return simulation.exitStatus();
+    return finish(simulation.exitStatus(), simulation.statusMessage());
   } catch (const flowform::InputError& e) {
     return endWithError(std::string("flowform: input error: ") + e.what(), kExitBadInput, errorComm,
                         comm->getRank(), comm->getSize());

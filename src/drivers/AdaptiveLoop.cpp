@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <memory>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "flowform/core/Budget.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/drivers/Simulation.hpp"
 #include "flowform/mesh/SizeField.hpp"
@@ -80,7 +83,7 @@ std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::stri
 }  // namespace
 
 int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& baseDir,
-                const Teuchos::RCP<const Comm>& comm, const std::string& outDir) {
+                const Teuchos::RCP<const Comm>& comm, const std::string& outDir, std::string* message) {
   const Teuchos::ParameterList& adaptivity = caseParams.sublist("Adaptivity");
   const auto targetArray = adaptivity.get<Teuchos::Array<std::string>>("Responses");
   const std::vector<std::string> targets(targetArray.begin(), targetArray.end());
@@ -100,6 +103,16 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
   double minSize = 0.0, maxSize = 0.0;
   bool met = false;
   std::string why;
+  int done = 0;  // cycles solved and estimated
+  const BudgetScope scope("the adaptivity loop", [&] { return std::to_string(done) + " cycle(s)"; });
+  // A response whose value is below what the solver resolves (|value| <= the absolute residual
+  // tolerance, in either mesh) is zero to round-off: its relative error means nothing, and the
+  // loop would refine to Maximum Dofs for Maximum Cycles chasing it.
+  auto number = [](double v) {
+    std::ostringstream os;
+    os << std::setprecision(3) << v;
+    return os.str();
+  };
   for (int cycle = 0; cycle < maxCycles; ++cycle) {
     const auto start = std::chrono::steady_clock::now();
     sim = std::make_unique<Simulation>(cycle == 0 ? caseParams : remeshed, baseDir, comm,
@@ -114,15 +127,18 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
     log() << "adaptivity: cycle " << cycle << ": " << sim->dofMap().numGlobalDofs() << " dofs\n";
     sim->run();
     if (sim->exitStatus() != 0) {
-      why = "cycle " + std::to_string(cycle) + ": the solve did not converge";
+      why = budgetWasSpent() ? budgetMessage()
+                             : "cycle " + std::to_string(cycle) + ": the solve did not converge: " + sim->statusMessage();
       break;
     }
     sim->estimateErrors(targets);
     const ErrorEstimate& estimate = sim->errorEstimate();
     if (!estimate.estimated) {
-      why = "cycle " + std::to_string(cycle) + ": no error estimate (" + estimate.failure + ")";
+      why = budgetWasSpent() ? budgetMessage()
+                             : "cycle " + std::to_string(cycle) + ": no error estimate (" + estimate.failure + ")";
       break;
     }
+    ++done;
     nlohmann::json entry = {{"cycle", cycle},
                             {"dofs", sim->dofMap().numGlobalDofs()},
                             {"newton_iterations", sim->report().newtonIterations},
@@ -141,10 +157,31 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
     }
     entry["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     cycles.push_back(entry);
+    const double resolution = sim->parameters().sublist("Solver").get<double>("Absolute Residual Tolerance");
+    for (const std::string& name : targets) {
+      const double value = sim->functionals().at(name);
+      const auto refined = estimate.refinedFunctionals.find(name);
+      const double fine = refined == estimate.refinedFunctionals.end() ? value : refined->second;
+      if (std::max(std::abs(value), std::abs(fine)) <= resolution && why.empty())
+        why = "cycle " + std::to_string(cycle) + ": the target response " + name + " = " + number(value) +
+              " (refined mesh: " + number(fine) + ") is zero to the solver's resolution (|value| <= " +
+              "Solver/Absolute Residual Tolerance = " + number(resolution) +
+              "): its relative error cannot be met by refining. The flow carries (almost) no load: are the loads "
+              "and walls as meant (a tiny Normal Penalty Factor lets the material pass through a wall)? "
+              "Adaptivity/Enabled=false solves the first mesh once";
+    }
+    if (!why.empty()) {
+      met = false;
+      break;
+    }
     if (met) break;
     if (cycle + 1 == maxCycles) {
       why = "the target relative error " + std::to_string(tolerance) + " was not met in " +
             std::to_string(maxCycles) + " cycles (Adaptivity/Maximum Cycles)";
+      break;
+    }
+    if (budgetSpent()) {  // the run's wall-clock budget (core/Budget.hpp): this cycle's results
+      why = budgetMessage();
       break;
     }
     // On the mesh as made: a free-surface update moved boundary nodes off the .geo's curves.
@@ -163,6 +200,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
   if (sim->report().converged) sim->checkSensitivities();
   sim->addSummaryBlock("adaptivity", block);
   sim->writeOutput(outDir);
+  if (message) *message = sim->statusMessage();
   return sim->exitStatus();
 }
 

@@ -221,8 +221,12 @@ void validateCase(ParameterList& params) {
     }
     const std::string file = params.sublist("Mesh").get<std::string>("File");
     if (file.size() < 4 || file.substr(file.size() - 4) != ".geo")
-      throw InputError("Adaptivity: Mesh/File '" + file + "' is not a .geo file; the adaptive loop remeshes the "
-                       "geometry through gmsh and needs one");
+      throw InputError("Mesh/File '" + file + "' is not a .geo, and the case asks for adaptivity (the Adaptivity "
+                       "sublist, Enabled by default): the adaptive loop makes each new mesh by remeshing the .geo "
+                       "geometry through gmsh with a size field, which a fixed .msh cannot give. Either solve this "
+                       "mesh once with --set \"Adaptivity/Enabled=false\" (add \"Error Estimation/Method=Two-Level\" "
+                       "for an error estimate), or refine it uniformly with \"Mesh/Uniform Refinements=N\" and "
+                       "Adaptivity/Enabled=false, or give the .geo");
   }
 }
 

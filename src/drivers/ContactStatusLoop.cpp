@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
+#include "flowform/core/Budget.hpp"
 #include "flowform/core/Log.hpp"
 
 namespace flowform {
@@ -63,6 +66,47 @@ bool ContactStatusLoop::certain(const std::vector<ContactWall>& walls, const std
   return more.change.violation - more.runnerUp > 2.0 * std::max(pressureError, penetrationError);
 }
 
+std::string ContactStatusLoop::cyclingMessage(const std::vector<ContactWall>& walls,
+                                              const std::vector<WallValues>& values, int total) const {
+  auto number = [](double v) {
+    std::ostringstream os;
+    os << std::setprecision(3) << v;
+    return os.str();
+  };
+  std::string where, hints;
+  for (size_t w = 0; w < walls.size(); ++w) {
+    const ContactWall& wall = walls[w];
+    const std::vector<int> nodes = wall.cyclingNodes(values[w].p, values[w].u, m_pressureTolerance,
+                                                     m_penetrationTolerance, m_maxPerNode);
+    if (nodes.empty()) continue;
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    int active = 0;
+    for (int k : nodes) {
+      const auto& xy = m_mesh.coords[wall.curve().nodes[k]];
+      for (int i = 0; i < 2; ++i) {
+        lo[i] = std::min(lo[i], xy[i]);
+        hi[i] = std::max(hi[i], xy[i]);
+      }
+      active += wall.isActive(k);
+    }
+    auto range = [&](int i) {
+      return lo[i] == hi[i] ? std::string(i ? "y = " : "x = ") + number(lo[i])
+                            : std::string(i ? "y " : "x ") + number(lo[i]) + ".." + number(hi[i]);
+    };
+    where += std::string(where.empty() ? "" : "; ") + std::to_string(nodes.size()) + " on wall '" + wall.name() +
+             "' at " + range(0) + ", " + range(1) + " (" + std::to_string(active) + " active in tension, " +
+             std::to_string(nodes.size() - active) + " free and penetrating)";
+    hints += std::string(hints.empty() ? "" : ", ") + "Boundary Conditions/" + wall.name() + "/Released Nodes=Never";
+  }
+  return "the contact status does not settle: " + std::to_string(total) +
+         " node(s) cycle between active and free: " + where + "; each changed " + std::to_string(m_maxPerNode) +
+         " times (Contact/Max Changes Per Node) and still violates its criterion (released in tension, the node "
+         "then penetrates). To try: " + hints +
+         " (a bilateral wall: the nodes stay on the tool, which may then pull; check p in the wall's boundary CSV); "
+         "a finer mesh (Mesh/Geo Parameters, Mesh/Uniform Refinements); a larger Contact/Pressure Tolerance. "
+         "More Contact/Max Changes Per Node or Contact/Status Update=Converged State did not help in the cases tried";
+}
+
 int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
                            std::vector<ContactWall>& walls, SolveReport& report) const {
   int changes = 0;
@@ -120,7 +164,25 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
     resolve(options);
   };
 
+  const BudgetScope scope("the contact-status loop",
+                          [&] { return std::to_string(changes) + " status change(s)"; });
+  // Every pass of the loop either changes a status (at most Max Status Changes), or takes one
+  // more Newton iteration (at most kMaxStepsPerChange per change), or converges a re-solve;
+  // kPassesPerChange passes per change bound them all, a cap that only a bug can reach.
+  const long maxPasses = kPassesPerChange * (static_cast<long>(m_maxChanges) + 1);
+  long passes = 0;
   while (report.converged) {
+    if (budgetSpent()) {
+      report.converged = false;
+      report.message = budgetMessage();
+      break;
+    }
+    if (++passes > maxPasses) {
+      report.converged = false;
+      report.message = "the contact-status loop made " + std::to_string(maxPasses) + " passes after " +
+                       std::to_string(changes) + " status change(s) without settling";
+      break;
+    }
     // Not yet sure what the converged state would decide (an iterate whose error nothing
     // bounds, or a decision not certain within the bound): one more Newton iteration.
     auto oneMoreIteration = [&]() {
@@ -172,8 +234,7 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
               << d.unsettledRatio << " x its tolerance); left as they are while the free surfaces move\n";
       } else if (d.unsettled > 0) {
         report.converged = false;
-        report.message = std::to_string(d.unsettled) + " contact node(s) cycle between active and free (each changed " +
-                         std::to_string(m_maxPerNode) + " times) and still violate their criterion";
+        report.message = cyclingMessage(walls, values, d.unsettled);
       }
       break;
     }

@@ -8,6 +8,7 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/core/InputError.hpp"
+#include "flowform/core/Budget.hpp"
 #include "flowform/core/NumberRange.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
@@ -109,7 +110,12 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
   Relaxation mode = m_relaxation;
   double bestAngle = std::numeric_limits<double>::infinity();
   int sinceBest = 0;
+  const BudgetScope scope("the free-surface loop", [&] { return std::to_string(report.iterations) + " update(s)"; });
   for (;;) {
+    if (budgetSpent()) {  // the run's wall-clock budget (core/Budget.hpp)
+      report.message = budgetMessage();
+      break;
+    }
     auto t = Clock::now();
     FreeSurfaceStep step = m_surfaces.step(mesh, dofMap, hooks.velocities(), walls, geometry, moveLimit);
     if (!step.failure.empty()) {

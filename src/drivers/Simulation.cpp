@@ -2,12 +2,15 @@
 
 #include <chrono>
 #include <filesystem>
+#include <iomanip>
+#include <sstream>
 
 #include <Teuchos_TimeMonitor.hpp>
 #include <nlohmann/json.hpp>
 
 #include "flowform/contact/ToolCorners.hpp"
 #include "flowform/contact/WallStates.hpp"
+#include "flowform/core/Budget.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/discretization/SolutionTransfer.hpp"
@@ -129,10 +132,11 @@ const SolveReport& Simulation::run() {
     next.restarts = m_report.restarts + 1;
     m_report = next;
   };
-  if (!m_report.converged && !m_walls.empty()) again(true, "from walls that stick at rest");
-  if (!m_report.converged && !m_walls.empty() && firstMinimum > caseMinimum)
+  if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) again(true, "from walls that stick at rest");
+  if (!m_report.converged && !m_walls.empty() && firstMinimum > caseMinimum && !budgetWasSpent())
     again(false, "from frictionless walls with every continuation halving");
   m_report.newtonPerSolve = {m_report.newtonIterations};
+  if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) m_report.message += firstSolveHints();
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged && !m_freeSurfaces->empty()) {
@@ -146,13 +150,33 @@ const SolveReport& Simulation::run() {
     log() << "flowform: converged (" << m_report.newtonIterations << " Newton iterations, "
           << m_report.continuationStages << " stages, |F| = " << m_report.residualNorm << ")\n";
   else
-    log() << "flowform: NOT CONVERGED: " << m_report.message << "\n";
+    log() << "flowform: NOT CONVERGED: " << (budgetWasSpent() ? budgetMessage() : m_report.message) << "\n";
   if (m_report.converged && m_sensitivity->requested()) runSensitivity();
   // The adaptive loop estimates itself (with the indicators it needs).
   if (m_report.converged && exitStatus() == 0 && !adaptivityRequested(m_params) &&
       m_params.sublist("Error Estimation").get<std::string>("Method") == "Two-Level")
     estimateErrors();
   return m_report;
+}
+
+std::string Simulation::firstSolveHints() const {
+  // Measured on xml/extrusion.xml at ν = 2 on every wall (LOOPS_NOTES.md): Tresca with m = 1 and
+  // h = 0.05 converged; a smaller Minimum Step, 150 Newton iterations, the Exact linearization did not.
+  double nu = 0.0;
+  std::string coulomb;
+  for (const ContactWall& wall : m_walls)
+    if (wall.usesFrictionCoefficient() && wall.settings().frictionCoefficient > nu) {
+      nu = wall.settings().frictionCoefficient;
+      coulomb = wall.name();
+    }
+  std::string hints = ". The first solve failed from each start (zero, walls sticking at rest, frictionless walls). To try: ";
+  if (!coulomb.empty())
+    hints += "a smaller Friction Coefficient (" + (std::ostringstream() << std::setprecision(3) << nu).str() +
+             " on wall '" + coulomb +
+             "'), or Friction Law = Tresca with a Shear Factor <= 1 (the friction stress bounded by the flow stress); ";
+  return hints + "a finer mesh (Mesh/Geo Parameters, Mesh/Uniform Refinements). A smaller "
+                 "Solver/Continuation/Minimum Step, more Solver/Max Newton Iterations or Newton Linearization = "
+                 "Exact may not help (they did not at friction coefficient 2 on the extrusion)";
 }
 
 void Simulation::estimateErrors(const std::vector<std::string>& indicatorResponses) {
@@ -277,10 +301,22 @@ void Simulation::moveNodes(const std::vector<std::array<double, 2>>& coords) {
 }
 
 int Simulation::exitStatus() const {
+  if (budgetWasSpent()) return 3;  // the run's wall-clock budget (core/Budget.hpp)
   if (!m_report.converged || !m_notMet.empty() || !m_estimate->failure.empty()) return 3;
   if (m_sensitivity->requested() && !m_sensitivity->finite()) return 3;
   if (m_fdCheck && !m_fdCheck->allConverged()) return 3;
   return 0;
+}
+
+std::string Simulation::statusMessage() const {
+  if (budgetWasSpent()) return budgetMessage();
+  if (!m_notMet.empty()) return m_notMet;
+  if (!m_estimate->failure.empty()) return "no error estimate: " + m_estimate->failure;
+  if (!m_report.converged) return m_report.message;
+  if (exitStatus() != 0)
+    return !m_sensitivity->finite() ? "dq/dh is not finite (singular Jacobian?)"
+                                    : "a finite-difference run of the sensitivity check did not converge";
+  return m_report.message;
 }
 
 void Simulation::runSensitivity() {
@@ -296,6 +332,7 @@ void Simulation::runSensitivity() {
 }
 
 void Simulation::checkSensitivities() {
+  if (budgetWasSpent()) return;  // the run ends (core/Budget.hpp)
   if (!m_sensitivity->checkRequested() || !m_sensitivity->computed() || !m_sensitivity->finite()) return;
   const auto start = std::chrono::steady_clock::now();
   PerturbedRun base;
@@ -398,6 +435,7 @@ void Simulation::writeOutput(const std::string& outDir) const {
   // Each piece reports its own part.
   nlohmann::json summary;
   m_report.report(summary);  // converged, message, newton_iterations, stages, ...
+  if (budgetWasSpent()) summary["converged"] = false;  // the run was cut short (core/Budget.hpp)
   summary["exit_status"] = exitStatus();
   summary["contact_changes"] = m_contactChanges;
   summary["free_surface_iterations"] = 0;
@@ -440,13 +478,7 @@ void Simulation::writeOutput(const std::string& outDir) const {
   if (m_fdCheck) m_fdCheck->report(summary);  // "fd_check"
   if (!m_freeSurfaces->empty() && m_sensitivity->computed() && m_sensitivity->totalShapeRequested())
     m_shapeDerivative.report(summary);  // "sensitivities_total_shape", "shape_derivative"
-  if (!m_notMet.empty())
-    summary["message"] = m_notMet;
-  else if (!m_estimate->failure.empty())
-    summary["message"] = "no error estimate: " + m_estimate->failure;
-  else if (m_report.converged && exitStatus() != 0)
-    summary["message"] = !m_sensitivity->finite() ? "dq/dh is not finite (singular Jacobian?)"
-                                                  : "a finite-difference run of the sensitivity check did not converge";
+  summary["message"] = statusMessage();
   for (const auto& [key, block] : m_extraSummary.items()) summary[key] = block;
   summary["parameters"] = parameterListToJson(m_params);
   writeJsonFile(dir + "/summary.json", summary);

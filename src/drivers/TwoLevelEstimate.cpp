@@ -6,6 +6,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <nlohmann/json.hpp>
 
+#include "flowform/core/Budget.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/discretization/SolutionTransfer.hpp"
 #include "flowform/drivers/Simulation.hpp"
@@ -63,6 +64,7 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
   params.sublist("Error Estimation").set("Method", "None");
   if (params.isSublist("Adaptivity")) params.remove("Adaptivity");
   if (params.isSublist("Sensitivity")) params.sublist("Sensitivity").set("Finite Difference Check", false);
+  const BudgetScope scope("the two-level error estimate (the case on the mesh refined once more)", nullptr);
   Simulation fine(params, coarse.baseDirectory(), coarse.dofMap().comm(), &coarse.sizeField());
   estimate.refinedDofs = static_cast<GO>(fine.dofMap().numGlobalDofs());
 

@@ -1,3 +1,4 @@
+#include "flowform/core/Budget.hpp"
 #include "flowform/sensitivity/FiniteDifferenceCheck.hpp"
 
 #include <algorithm>
@@ -54,6 +55,7 @@ FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, con
   m_names.push_back("pressure_field");
   m_ddm = sensitivity.responseDerivatives();
   m_differences = Teuchos::rcp(new MultiVector(base.x->getMap(), parameters.size()));
+  const BudgetScope scope("the finite-difference check", [&] { return std::to_string(m_runs) + " run(s)"; });
   for (size_t j = 0; j < parameters.size(); ++j) {
     const SensitivityParameter& h = parameters[j];
     ParameterRuns pr;

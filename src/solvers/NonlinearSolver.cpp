@@ -15,6 +15,7 @@
 #include "flowform/core/NumberRange.hpp"
 #include <nlohmann/json.hpp>
 
+#include "flowform/core/Budget.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/solvers/FlowGroup.hpp"
 #include "flowform/solvers/LinearSolverRegistry.hpp"
@@ -104,6 +105,26 @@ class ResidualAndStepTest : public NOX::StatusTest::Generic {
   Teuchos::RCP<NOX::Abstract::Vector> m_scratch;
 };
 
+/// Fails Newton when the run's wall-clock budget is spent (Solver/Time Limit, core/Budget.hpp);
+/// counts the iterations for the budget's message.
+class BudgetTest : public NOX::StatusTest::Generic {
+ public:
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
+    m_iterations = solver.getNumIterations();
+    m_status = budgetSpent() ? NOX::StatusTest::Failed : NOX::StatusTest::Unconverged;
+    return m_status;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return m_status; }
+  std::ostream& print(std::ostream& os, int indent) const override {
+    return os << std::string(indent, ' ') << "wall-clock budget\n";
+  }
+  int iterations() const { return m_iterations; }
+
+ private:
+  int m_iterations = 0;
+  NOX::StatusTest::StatusType m_status = NOX::StatusTest::Unevaluated;
+};
+
 /// Logs one line per Newton iteration: ||F||, ||Δx|| and the line-search step.
 class NewtonLogger : public NOX::Observer {
  public:
@@ -120,6 +141,9 @@ class NewtonLogger : public NOX::Observer {
  private:
   const ResidualAndStepTest& m_test;
 };
+
+/// Continuation stages (converged or not) at most per solve.
+constexpr int kMaxStageAttempts = 1000;
 
 bool isFinite(const Vector& v) { return std::isfinite(v.norm2()); }
 
@@ -154,6 +178,12 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
   valid->set("Max Newton Iterations", 40, "Newton iterations per continuation stage", intInRange(1, 10000));
   // Converged when ||F|| <= max(absolute, relative ||F_0||): either may be 0 (not used), and a
   // relative tolerance of 1 or more would call the start converged.
+  valid->set("Time Limit", 0.0,
+             "wall-clock budget of the whole run [s], from the start of the process; 0 = none. Checked at every "
+             "Newton iteration, continuation stage, contact-status change, free-surface update, adaptivity cycle and "
+             "finite-difference run: when spent, the run ends not converged (exit 3) with the last state written and "
+             "the message saying where it was (docs/theory.md §5)",
+             nonNegative());
   valid->set("Absolute Residual Tolerance", 1e-10, "||F||_2 below this is converged", nonNegative());
   valid->set("Relative Residual Tolerance", 1e-9, "||F||_2 / ||F_0||_2 below this is converged",
              inRange(0.0, 1.0, false, true));
@@ -225,7 +255,13 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, const
   residualTest->setReference(options.referenceResidual);
   auto maxIters = Teuchos::rcp(new NOX::StatusTest::MaxIters(cap));
   auto finite = Teuchos::rcp(new NOX::StatusTest::FiniteValue);
+  auto budget = Teuchos::rcp(new BudgetTest);
+  std::ostringstream where;
+  where << "Newton at n = " << formatNumber(physics.material.rateExponent) << ", e0 = "
+        << formatNumber(physics.material.cutoff);
+  const BudgetScope scope(where.str(), [&] { return std::to_string(budget->iterations()) + " iteration(s)"; });
   auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
+  tests->addStatusTest(budget);
   tests->addStatusTest(finite);
   tests->addStatusTest(residualTest);
   tests->addStatusTest(maxIters);
@@ -262,7 +298,7 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, const
   report.lastStep = residualTest->step();
   report.startResidualNorm = residualTest->startNorm();
   report.converged = status == NOX::StatusTest::Converged && std::isfinite(report.residualNorm);
-  report.stoppedAtCap = !report.converged && options.maxIterations > 0 &&
+  report.stoppedAtCap = !report.converged && !budgetWasSpent() && options.maxIterations > 0 &&
                         maxIters->checkStatus(*solver, NOX::StatusTest::Minimal) == NOX::StatusTest::Failed &&
                         std::isfinite(report.residualNorm) && report.residualNorm < report.initialResidualNorm;
   if (report.converged || report.stoppedAtCap) Tpetra::deep_copy(x, *tpetraVector(solver->getSolutionGroup().getX()));
@@ -280,6 +316,10 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
   report.converged = sr.converged;
   report.stoppedAtCap = sr.stoppedAtCap;
   if (sr.converged || sr.stoppedAtCap) return report;
+  if (budgetWasSpent()) {  // no second try: the run ends (core/Budget.hpp)
+    report.message = budgetMessage();
+    return report;
+  }
   if (options.maxIterations > 0) {
     // A capped step that did not reduce ||F|| (the line search failed): Newton without the
     // cap from the same start, before the costly restart from the predictor.
@@ -295,6 +335,10 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
     report.converged = again.converged;
     report.stoppedAtCap = false;
     if (again.converged) return report;
+    if (budgetWasSpent()) {
+      report.message = budgetMessage();
+      return report;
+    }
   }
   log() << "  re-solve failed; starting again from the Newtonian predictor\n";
   Tpetra::deep_copy(x, start);
@@ -357,7 +401,23 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
 
   double lambda = 0.0;
   Vector xConverged(x, Teuchos::Copy);
+  const BudgetScope scope("the continuation in n and e0", [&] {
+    return std::to_string(report.continuationStages) + " converged stage(s) (lambda = " + formatNumber(lambda) + ")";
+  });
+  int attempts = 0;
   while (lambda < 1.0) {
+    // Caps: the wall-clock budget, and kMaxStageAttempts stages (a Growth Factor of 1 with a tiny
+    // Minimum Step could otherwise take 10^12 stages).
+    const bool spent = budgetSpent();
+    if (spent || ++attempts > kMaxStageAttempts) {
+      report.message = spent ? budgetMessage()
+                             : "the continuation did not reach the target in " + std::to_string(kMaxStageAttempts) +
+                                   " stages (lambda = " + formatNumber(lambda) +
+                                   "; Solver/Continuation/Initial Step, Minimum Step, Growth Factor)";
+      Tpetra::deep_copy(x, xConverged);
+      m_model.setPhysics(target);
+      return report;
+    }
     const double next = std::min(1.0, lambda + step);
     const FlowPhysics stage = stageAt(next);
     log() << "  stage lambda = " << next << ": n = " << stage.material.rateExponent
@@ -372,6 +432,11 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
       Tpetra::deep_copy(xConverged, x);
       ++report.continuationStages;
       if (sr.newtonIterations <= 5) step *= growth;
+    } else if (budgetWasSpent()) {  // stopped by the budget, not a failed stage: no halving
+      report.message = budgetMessage();
+      Tpetra::deep_copy(x, xConverged);
+      m_model.setPhysics(target);
+      return report;
     } else {
       step *= 0.5;
       log() << "  stage failed after " << sr.newtonIterations << " iterations (|F| = " << sr.residualNorm

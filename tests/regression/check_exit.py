@@ -2,7 +2,8 @@
 """Runs one flowform command and checks how it ended (tests/regression/BadInput.cmake).
 
 usage: check_exit.py --outdir DIR [--status N] [--stderr-contains TEXT ...]
-                     [--no-output | --converged | --outdir-is-a-file | --summary-is-a-directory]
+                     [--no-output | --converged | --not-converged | --flagged | --outdir-is-a-file |
+                      --summary-is-a-directory] [--message-contains TEXT ...] [--written FILE ...]
                      -- COMMAND ...
 
   COMMAND                an argument @EMPTY@ is passed as the empty string (CMake drops those)
@@ -12,6 +13,13 @@ usage: check_exit.py --outdir DIR [--status N] [--stderr-contains TEXT ...]
   --stderr-contains T    stderr must contain T (repeatable; case-sensitive)
   --no-output            DIR must not exist afterwards (bad input writes nothing)
   --converged            DIR/summary.json must exist and say "converged": true
+  --not-converged        DIR/summary.json must exist and say "converged": false (exit 3: the
+                         results are written, flagged)
+  --flagged              DIR/summary.json must exist with "exit_status" N (whatever "converged",
+                         the solve's own, says: an adaptive run whose target was not met)
+  --message-contains T   summary.json "message" must contain T (repeatable; with --converged,
+                         --not-converged or --flagged)
+  --written FILE         DIR/FILE must exist (repeatable)
   --outdir-is-a-file     DIR is made a regular file first and must be left as it was
   --summary-is-a-directory  DIR/summary.json is made a directory first (the run cannot write its
                          summary) and must be left as it was, empty
@@ -39,10 +47,14 @@ def main():
     mode = parser.add_mutually_exclusive_group()
     mode.add_argument("--no-output", action="store_true")
     mode.add_argument("--converged", action="store_true")
+    mode.add_argument("--not-converged", action="store_true")
+    mode.add_argument("--flagged", action="store_true")
     mode.add_argument("--outdir-is-a-file", action="store_true",
                       help="make DIR a regular file first; it must be left as it was")
     mode.add_argument("--summary-is-a-directory", action="store_true",
                       help="make DIR/summary.json a directory first; it must be left as it was")
+    parser.add_argument("--message-contains", action="append", default=[])
+    parser.add_argument("--written", action="append", default=[])
     parser.add_argument("--timeout", type=float, default=600)
     args = parser.parse_args(sys.argv[1:split])
     # CMake drops empty arguments from a command: @EMPTY@ stands for one.
@@ -90,17 +102,27 @@ def main():
             failures.append(f"{args.outdir} is no longer a readable file: {e}")
     if args.summary_is_a_directory and not (os.path.isdir(blocked_summary) and not os.listdir(blocked_summary)):
         failures.append(f"{blocked_summary} is no longer an empty directory")
-    if args.converged:
+    if args.converged or args.not_converged or args.flagged:
         path = os.path.join(args.outdir, "summary.json")
         try:
             summary = summary_module.load(path, missing_ok=False)
-            if summary.get("converged") is not True:
-                failures.append(f"{path}: converged is {summary.get('converged')!r}, expected true")
+            if not args.flagged and summary.get("converged") is not bool(args.converged):
+                failures.append(f"{path}: converged is {summary.get('converged')!r}, expected "
+                                f"{str(bool(args.converged)).lower()}")
+            message = summary.get("message") or ""
+            print(f"summary.json message: {message}")
+            for text in args.message_contains:
+                if text not in message:
+                    failures.append(f"{path}: message does not contain {text!r}")
             if summary.get("exit_status") != args.status:
                 failures.append(f"{path}: exit_status is {summary.get('exit_status')!r}, "
                                 f"expected {args.status}")
         except (OSError, ValueError) as e:
             failures.append(f"cannot read {path}: {e}")
+
+    for name in args.written:
+        if not os.path.exists(os.path.join(args.outdir, name)):
+            failures.append(f"{os.path.join(args.outdir, name)} was not written")
 
     for f in failures:
         print("FAIL:", f)

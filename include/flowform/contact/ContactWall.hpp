@@ -229,6 +229,17 @@ class ContactWall {
                           int* unsettled = nullptr, double* runnerUp = nullptr,
                           double* unsettledRatio = nullptr) const;
 
+ /// The nodes that changed `maxChangesPerNode` times and still violate their criterion (those
+  /// nextChange counts as unsettled).
+  std::vector<int> cyclingNodes(const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
+                                double pressureTolerance, double penetrationTolerance, int maxChangesPerNode) const {
+    std::vector<int> nodes;
+    for (int k = 0; k < numNodes(); ++k)
+      if (m_changes[k] >= maxChangesPerNode && violation(k, p, u, pressureTolerance, penetrationTolerance) > 0.0)
+        nodes.push_back(k);
+    return nodes;
+  }
+
  private:
   /// How far node k violates the criterion of its status (> 0: it should change; −∞: it
   /// cannot change): tension beyond the pressure tolerance (active), motion into the tool

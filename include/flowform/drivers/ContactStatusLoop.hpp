@@ -62,7 +62,12 @@ class ContactStatusLoop {
   bool certain(const std::vector<ContactWall>& walls, const std::vector<WallValues>& values, const Decision& d,
                double pressureError, double penetrationError) const;
 
+  /// The not-converged message for `total` nodes that cycle: which walls, where, and what to try.
+  std::string cyclingMessage(const std::vector<ContactWall>& walls, const std::vector<WallValues>& values,
+                             int total) const;
+
   static constexpr int kMaxStepsPerChange = 8;  ///< then the re-solve is converged in one go
+  static constexpr long kPassesPerChange = 4 * (kMaxStepsPerChange + 4);  ///< loop passes per change at most
   static constexpr double kContraction = 0.5;  ///< ||F|| reduction of a step that makes an iterate readable
   int m_maxChanges, m_maxPerNode;
   bool m_tolerateCycling = false;

@@ -104,6 +104,11 @@ class Simulation {
   /// 0; 3 when the flow solve did not converge, dq/dh is not finite, or a run of the
   /// finite-difference check did not converge (the results are written all the same).
   int exitStatus() const;
+  /// Why the run is not converged (summary.json "message", and stderr at exit 3); the
+  /// solve's message (empty) when it is.
+  std::string statusMessage() const;
+  /// What to try when the first solve of a case with contact walls failed from every start.
+  std::string firstSolveHints() const;
   const std::vector<ContactWall>& contactWalls() const { return m_walls; }
   int contactChanges() const { return m_contactChanges; }
   const FreeSurfaces& freeSurfaces() const { return *m_freeSurfaces; }

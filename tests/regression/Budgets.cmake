@@ -1,0 +1,90 @@
+# Loop caps and the run's wall-clock budget (LOOPS_NOTES.md): runs that cannot converge end
+# promptly with exit 3, the results written and summary.json "message" (and stderr) saying why and
+# what to try; never a hang. Each case takes seconds.
+#
+# flowform_budget_test(NAME CASE case.xml [SET P=V ...] [STATUS n] [MODE --not-converged|--flagged]
+#                      [CONTAINS text ...] [MESSAGE text ...] [WRITTEN file ...])
+#   Runs flowform on CASE (a path relative to tests/regression/bad_input, as for
+#   flowform_exit_test in BadInput.cmake, which defines FLOWFORM_BAD_INPUT_DIR and check_exit.py)
+#   with --quiet and checks the exit status (default 3), stderr (CONTAINS), summary.json's
+#   "message" (MESSAGE) and the files written (WRITTEN). MODE --not-converged (default) also
+#   checks "converged": false; --flagged only the exit status in summary.json.
+
+if(NOT Python3_Interpreter_FOUND OR NOT COMMAND flowform_exit_test)
+  return()
+endif()
+
+function(flowform_budget_test name)
+  cmake_parse_arguments(ARG "" "CASE;STATUS;MODE" "SET;CONTAINS;MESSAGE;WRITTEN" ${ARGN})
+  if(NOT DEFINED ARG_STATUS)
+    set(ARG_STATUS 3)
+  endif()
+  if(NOT DEFINED ARG_MODE)
+    set(ARG_MODE --not-converged)
+  endif()
+  set(outdir ${FLOWFORM_BAD_INPUT_OUT}/${name})
+  set(check --outdir ${outdir} --status ${ARG_STATUS} ${ARG_MODE} --timeout 120)
+  foreach(text ${ARG_CONTAINS})
+    list(APPEND check "--stderr-contains=${text}")
+  endforeach()
+  foreach(text ${ARG_MESSAGE})
+    list(APPEND check "--message-contains=${text}")
+  endforeach()
+  foreach(file ${ARG_WRITTEN})
+    list(APPEND check "--written=${file}")
+  endforeach()
+  set(command $<TARGET_FILE:flowform> ${FLOWFORM_BAD_INPUT_DIR}/${ARG_CASE} -o ${outdir} --quiet)
+  foreach(assignment ${ARG_SET})
+    list(APPEND command --set ${assignment})
+  endforeach()
+  add_test(NAME ${name} COMMAND ${Python3_EXECUTABLE} ${FLOWFORM_CHECK_EXIT} ${check} -- ${command})
+  set_tests_properties(${name} PROPERTIES LABELS "regression;budgets" TIMEOUT 180
+                       WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+endfunction()
+
+set(FLOWFORM_BUDGET_EXTRUSION ../../../xml/extrusion.xml)
+
+# --- the wall-clock budget: a limit spent before the first continuation stage --------------------
+# 1 ms is spent by the time the mesh is made (gmsh), so the first check stops the run: exit 3,
+# the last state written, the message naming the parameter and the loop.
+flowform_budget_test(budget_time_limit_channel CASE channel_small.xml
+  SET "Solver/Time Limit=1e-3"
+  CONTAINS "flowform: not converged: wall-clock budget of 0.001 s (Solver/Time Limit) spent in"
+  MESSAGE "wall-clock budget of 0.001 s (Solver/Time Limit) spent in the continuation in n and e0, after 0"
+  WRITTEN summary.json solution.xdmf)
+# The same in the adaptive loop (extrusion, coarse): the message names the loops it ran in.
+flowform_budget_test(budget_time_limit_adaptive CASE ${FLOWFORM_BUDGET_EXTRUSION}
+  SET "Mesh/Geo Parameters/h=0.2" "Solver/Time Limit=1e-3"
+  CONTAINS "(Solver/Time Limit) spent in"
+  MESSAGE "wall-clock budget of 0.001 s (Solver/Time Limit) spent in" "within the adaptivity loop, after 0 cycle(s)"
+  WRITTEN summary.json solution.xdmf)
+# A negative limit is bad input (exit 2, nothing written).
+flowform_exit_test(bad_input_time_limit_negative CASE channel_small.xml SET "Solver/Time Limit=-1"
+  CONTAINS "Time Limit")
+
+# --- the hang of the hostile battery: walls with Normal Penalty Factor 1e-300 ---------------------
+# The walls carry no load and ram_force is zero to round-off; its relative error (noise / noise)
+# never met, the adaptive loop refined to Maximum Dofs for Maximum Cycles (hours). Now cycle 0
+# says so and stops: exit 3, in seconds.
+flowform_budget_test(budget_zero_response_penalty_1e-300 CASE ${FLOWFORM_BUDGET_EXTRUSION} MODE --flagged
+  SET "Boundary Conditions/container/Normal Penalty Factor=1e-300"
+      "Boundary Conditions/die_face/Normal Penalty Factor=1e-300"
+      "Boundary Conditions/die_land/Normal Penalty Factor=1e-300"
+  CONTAINS "flowform: not converged:" "is zero to the solver's resolution"
+  MESSAGE "cycle 0: the target response ram_force" "Normal Penalty Factor" "Adaptivity/Enabled=false"
+  WRITTEN summary.json)
+
+# --- ordinary physics that does not converge says what and what to try ----------------------------
+# n = 1 on the coarse extrusion: seven die-land nodes cycle between active and free.
+flowform_budget_test(contact_cycling_message CASE ${FLOWFORM_BUDGET_EXTRUSION}
+  SET "Adaptivity/Enabled=false" "Mesh/Geo Parameters/h=0.2" "Material/Rate Exponent=1"
+  CONTAINS "flowform: not converged: the contact status does not settle"
+  MESSAGE "7 node(s) cycle between active and free" "on wall 'die_land' at x 0.214..0.643, y = 0.5"
+          "Boundary Conditions/die_land/Released Nodes=Never" "Contact/Max Changes Per Node"
+  WRITTEN summary.json)
+
+# --- a user .msh with an adaptive case: exit 2, the reason and the ways forward ------------------
+flowform_exit_test(bad_input_adaptive_msh CASE ${FLOWFORM_BUDGET_EXTRUSION}
+  SET "Mesh/File=../tests/data/unit_square_tri.msh"
+  CONTAINS "is not a .geo, and the case asks for adaptivity" "remeshing the .geo"
+           "Adaptivity/Enabled=false" "Mesh/Uniform Refinements")
