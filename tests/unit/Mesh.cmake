@@ -7,3 +7,5 @@ target_compile_definitions(MeshTest PRIVATE
 # Moving a state between meshes (point location, interpolation, wall statuses), 1 and 2 ranks.
 flowform_unit_test(TransferTest unit/TransferTest.cpp)
 flowform_unit_test(TransferTest unit/TransferTest.cpp NP 2)
+# What a .geo may do (mesh/GeoScript): the command filter before gmsh parses a file.
+flowform_unit_test(GeoScriptTest unit/GeoScriptTest.cpp)
