@@ -160,7 +160,7 @@ const SolveReport& Simulation::run() {
 }
 
 std::string Simulation::firstSolveHints() const {
-  // Measured on xml/extrusion.xml at ν = 2 on every wall (LOOPS_NOTES.md): Tresca with m = 1 and
+  // Measured on xml/extrusion.xml at ν = 2 on every wall (docs/theory.md §5, "Not-converged messages"): Tresca with m = 1 and
   // h = 0.05 converged; a smaller Minimum Step, 150 Newton iterations, the Exact linearization did not.
   double nu = 0.0;
   std::string coulomb;

@@ -1,21 +1,22 @@
-# Loop caps and the run's wall-clock budget (LOOPS_NOTES.md): runs that cannot converge end
+# Loop caps and the run's wall-clock budget (docs/theory.md §5): runs that cannot converge end
 # promptly with exit 3, the results written and summary.json "message" (and stderr) saying why and
 # what to try; never a hang. Each case takes seconds.
 #
-# flowform_budget_test(NAME CASE case.xml [SET P=V ...] [STATUS n] [MODE --not-converged|--flagged]
+# flowform_budget_test(NAME CASE case.xml [SET P=V ...] [STATUS n] [NP n] [MODE --not-converged|--flagged]
 #                      [CONTAINS text ...] [MESSAGE text ...] [WRITTEN file ...])
 #   Runs flowform on CASE (a path relative to tests/regression/bad_input, as for
 #   flowform_exit_test in BadInput.cmake, which defines FLOWFORM_BAD_INPUT_DIR and check_exit.py)
 #   with --quiet and checks the exit status (default 3), stderr (CONTAINS), summary.json's
 #   "message" (MESSAGE) and the files written (WRITTEN). MODE --not-converged (default) also
-#   checks "converged": false; --flagged only the exit status in summary.json.
+#   checks "converged": false; --flagged only the exit status in summary.json. NP n > 1 runs it
+#   under mpiexec on n ranks.
 
 if(NOT Python3_Interpreter_FOUND OR NOT COMMAND flowform_exit_test)
   return()
 endif()
 
 function(flowform_budget_test name)
-  cmake_parse_arguments(ARG "" "CASE;STATUS;MODE" "SET;CONTAINS;MESSAGE;WRITTEN" ${ARGN})
+  cmake_parse_arguments(ARG "" "CASE;STATUS;MODE;NP" "SET;CONTAINS;MESSAGE;WRITTEN" ${ARGN})
   if(NOT DEFINED ARG_STATUS)
     set(ARG_STATUS 3)
   endif()
@@ -37,9 +38,15 @@ function(flowform_budget_test name)
   foreach(assignment ${ARG_SET})
     list(APPEND command --set ${assignment})
   endforeach()
+  if(ARG_NP AND ARG_NP GREATER 1)
+    set(command ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${ARG_NP} ${command})
+  endif()
   add_test(NAME ${name} COMMAND ${Python3_EXECUTABLE} ${FLOWFORM_CHECK_EXIT} ${check} -- ${command})
   set_tests_properties(${name} PROPERTIES LABELS "regression;budgets" TIMEOUT 180
                        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  if(ARG_NP AND ARG_NP GREATER 1)
+    set_tests_properties(${name} PROPERTIES ENVIRONMENT "${FLOWFORM_MPI_ENV}" PROCESSORS ${ARG_NP})
+  endif()
 endfunction()
 
 set(FLOWFORM_BUDGET_EXTRUSION ../../../xml/extrusion.xml)
@@ -52,6 +59,14 @@ flowform_budget_test(budget_time_limit_channel CASE channel_small.xml
   CONTAINS "flowform: not converged: wall-clock budget of 0.001 s (Solver/Time Limit) spent in"
   MESSAGE "wall-clock budget of 0.001 s (Solver/Time Limit) spent in the continuation in n and e0, after 0"
   WRITTEN summary.json solution.xdmf)
+# On 2 ranks: rank 0's clock decides, so both ranks leave the same loop at the same point.
+if(MPIEXEC_EXECUTABLE)
+  flowform_budget_test(budget_time_limit_channel_np2 CASE channel_small.xml NP 2
+    SET "Solver/Time Limit=1e-3"
+    CONTAINS "flowform: not converged: wall-clock budget of 0.001 s (Solver/Time Limit) spent in"
+    MESSAGE "wall-clock budget of 0.001 s (Solver/Time Limit) spent in the continuation in n and e0, after 0"
+    WRITTEN summary.json solution.xdmf)
+endif()
 # The same in the adaptive loop (extrusion, coarse): the message names the loops it ran in.
 flowform_budget_test(budget_time_limit_adaptive CASE ${FLOWFORM_BUDGET_EXTRUSION}
   SET "Mesh/Geo Parameters/h=0.2" "Solver/Time Limit=1e-3"
