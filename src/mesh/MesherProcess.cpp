@@ -3,12 +3,15 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <poll.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -89,10 +92,119 @@ std::string lastGmshError(const std::string& log) {
   return lastError.empty() ? lastLine : lastError;
 }
 
+/// The mesher, started once and kept for the run: gmsh's ~90 shared libraries take a few
+/// tenths of a second to load, which an adaptive run would otherwise pay for every mesh. One
+/// request at a time over a socket pair (the mesher's fd 0 and 3): the request directory's path
+/// out, "done" back. A mesher that crashed, or that was stopped at its time limit, is gone; the
+/// next request starts a new one.
+class Mesher {
+ public:
+  ~Mesher() { stop(false); }
+
+  /// Sends `dir` and waits up to `seconds` for the answer. False when the mesher died or was
+  /// stopped at the limit (`timedOut`); `status` is then its wait status.
+  bool request(const std::string& dir, double seconds, bool& timedOut, int& status, std::string& log) {
+    if (m_pid > 0 && waitpid(m_pid, &status, WNOHANG) == m_pid) forget();
+    if (m_pid <= 0) start();
+    const auto logStart = fileSize(m_log.path() + "/gmsh.log");
+    const std::string line = dir + "\n";
+    timedOut = false;
+    bool answered = send(m_socket, line.data(), line.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(line.size());
+    if (answered) answered = awaitAnswer(seconds, timedOut);
+    log = readFrom(m_log.path() + "/gmsh.log", logStart);
+    if (answered) return true;
+    stop(timedOut);
+    status = m_status;
+    return false;
+  }
+
+ private:
+  void start() {
+    const std::string program = mesherProgram();
+    int fds[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0)
+      throw std::runtime_error(std::string("cannot connect to the mesher: ") + std::strerror(errno));
+    const std::string logPath = m_log.path() + "/gmsh.log";
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, fds[1], 0);
+    posix_spawn_file_actions_adddup2(&actions, fds[1], 3);
+    posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0600);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    std::vector<char*> argv{const_cast<char*>(program.c_str()), nullptr};
+    const int spawned = posix_spawn(&m_pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    close(fds[1]);
+    if (spawned != 0) {
+      close(fds[0]);
+      m_pid = -1;
+      throw std::runtime_error("cannot start the mesher '" + program + "': " + std::strerror(spawned));
+    }
+    m_socket = fds[0];
+  }
+
+  /// Waits for the line "done"; false at the deadline or when the mesher is gone.
+  bool awaitAnswer(double seconds, bool& timedOut) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    std::string answer;
+    while (answer.find('\n') == std::string::npos) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+      if (left.count() <= 0) {
+        timedOut = true;
+        return false;
+      }
+      pollfd p{m_socket, POLLIN, 0};
+      const int ready = poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
+      if (ready < 0 && errno != EINTR) return false;
+      if (ready <= 0) continue;
+      char buffer[64];
+      const ssize_t n = recv(m_socket, buffer, sizeof buffer, 0);
+      if (n <= 0) return false;  // the mesher is gone
+      answer.append(buffer, static_cast<std::size_t>(n));
+    }
+    return true;
+  }
+
+  void stop(bool kill9) {
+    if (m_pid <= 0) return;
+    if (kill9) kill(m_pid, SIGKILL);
+    close(m_socket);  // end of its input: it leaves
+    m_socket = -1;
+    waitpid(m_pid, &m_status, 0);
+    m_pid = -1;
+  }
+  void forget() {
+    close(m_socket);
+    m_socket = -1;
+    m_pid = -1;
+  }
+  static std::uintmax_t fileSize(const std::string& path) {
+    std::error_code ec;
+    const auto n = fs::file_size(path, ec);
+    return ec ? 0 : n;
+  }
+  static std::string readFrom(const std::string& path, std::uintmax_t offset) {
+    std::ifstream in(path, std::ios::binary);
+    in.seekg(static_cast<std::streamoff>(offset));
+    std::ostringstream os;
+    os << in.rdbuf();
+    return os.str();
+  }
+
+  ScratchDirectory m_log;  ///< the mesher's output, gmsh's log, for all its requests
+  pid_t m_pid = -1;
+  int m_socket = -1;
+  int m_status = 0;
+};
+
+Mesher& mesher() {
+  static Mesher instance;
+  return instance;
+}
+
 }  // namespace
 
 Mesh meshInProcess(const ReadOptions& opt, const SizeField* sizeField) {
-  const std::string program = mesherProgram();
   ScratchDirectory scratch;
   const std::string dir = scratch.path();
   {
@@ -105,38 +217,10 @@ Mesh meshInProcess(const ReadOptions& opt, const SizeField* sizeField) {
     }
     if (!request) throw std::runtime_error("cannot write the mesher's request in '" + dir + "'");
   }
-  const std::string logPath = dir + "/gmsh.log";
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  std::vector<char*> argv{const_cast<char*>(program.c_str()), const_cast<char*>(dir.c_str()), nullptr};
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0)
-    throw std::runtime_error("cannot start the mesher '" + program + "': " + std::strerror(spawned));
-
-  // Wait, polling, until it ends or its time is up.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(opt.timeLimit);
-  auto pause = std::chrono::microseconds(200);
-  int status = 0;
   bool timedOut = false;
-  while (true) {
-    const pid_t done = waitpid(pid, &status, WNOHANG);
-    if (done == pid) break;
-    if (done < 0 && errno != EINTR) throw std::runtime_error(std::string("waiting for the mesher: ") + std::strerror(errno));
-    if (std::chrono::steady_clock::now() > deadline) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      timedOut = true;
-      break;
-    }
-    std::this_thread::sleep_for(pause);
-    pause = std::min(pause * 2, std::chrono::microseconds(20000));
-  }
-  const std::string log = readFile(logPath);
+  int status = 0;
+  std::string log;
+  const bool answered = mesher().request(dir, opt.timeLimit, timedOut, status, log);
   if (opt.verbose) flowform::log() << log;
   std::ostringstream limit;
   limit << opt.timeLimit;
@@ -146,9 +230,9 @@ Mesh meshInProcess(const ReadOptions& opt, const SizeField* sizeField) {
                      "intended? gmsh's last message: " + lastGmshError(log));
   const std::string result = readFile(dir + "/result.bin");
   if (!result.empty()) return unpackMesh(std::vector<char>(result.begin(), result.end()));
-  const std::string how = WIFSIGNALED(status) ? "crashed (signal " + std::to_string(WTERMSIG(status)) + ", " +
-                                                    strsignal(WTERMSIG(status)) + ")"
-                                              : "stopped (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
+  const std::string how = !answered && WIFSIGNALED(status)
+                              ? "crashed (signal " + std::to_string(WTERMSIG(status)) + ", " + strsignal(WTERMSIG(status)) + ")"
+                              : "stopped (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
   throw InputError("mesh file '" + opt.path + "': gmsh " + how + " while reading or meshing it; its last message: " +
                    lastGmshError(log));
 }

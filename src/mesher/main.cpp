@@ -1,12 +1,15 @@
-// flowform-mesh DIR — the mesher process (MesherProcess.hpp, GmshMesher.hpp). Reads
-// DIR/request.json (the validated Mesh options) and DIR/size_field.bin (optional), meshes with
-// gmsh and writes DIR/result.bin: the packed Mesh, or the error that stopped it
-// (MeshPacking.hpp). Exit 0 when result.bin is written, whatever it says; anything else is a
-// crash the parent reports with gmsh's last logged error.
+// flowform-mesh — the mesher process (MesherProcess.hpp, GmshMesher.hpp), started by flowform
+// with a socket as its fd 0 and 3. For each line DIR it reads: reads DIR/request.json (the
+// validated Mesh options) and DIR/size_field.bin (optional), meshes with gmsh, writes
+// DIR/result.bin — the packed Mesh, or the error that stopped it (MeshPacking.hpp) — and answers
+// "done" on fd 3. It leaves at the end of its input. An error gmsh throws inside its OpenMP
+// regions ends it after the answer (terminate handler); a crash ends it without one, which the
+// parent reports with gmsh's last logged error.
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <exception>
@@ -26,6 +29,7 @@
 namespace {
 
 std::string g_resultPath;  ///< where the answer goes, also from the terminate handler
+constexpr int kAnswerFd = 3;
 std::string g_meshPath;    ///< the file being meshed, for messages
 double g_memoryLimit = 0;  ///< bytes
 
@@ -47,6 +51,11 @@ std::string outOfMemoryMessage() {
   return os.str();
 }
 
+void answer() {
+  const char done[] = "done\n";
+  if (write(kAnswerFd, done, sizeof done - 1) < 0) _exit(1);
+}
+
 /// An exception that leaves one of gmsh's OpenMP regions cannot be caught: it ends here. The
 /// message still reaches the run.
 [[noreturn]] void onTerminate() {
@@ -65,20 +74,13 @@ std::string outOfMemoryMessage() {
   }
   std::cerr << message << std::endl;
   writeResult(flowform::packMeshError(true, message));
+  answer();
   _exit(0);
 }
 
-}  // namespace
-
-int main(int argc, char* argv[]) {
-  prctl(PR_SET_PDEATHSIG, SIGKILL);  // the run that started us is gone: so are we
-  if (argc != 2) {
-    std::cerr << "usage: flowform-mesh DIR (started by flowform, not by hand)\n";
-    return 1;
-  }
-  const std::string dir = argv[1];
+/// One request: DIR/request.json in, DIR/result.bin out.
+void serve(const std::string& dir) {
   g_resultPath = dir + "/result.bin";
-  std::set_terminate(onTerminate);
   try {
     std::ifstream in(dir + "/request.json");
     const flowform::ReadOptions opt = flowform::readOptionsFromJson(nlohmann::json::parse(in));
@@ -93,18 +95,37 @@ int main(int argc, char* argv[]) {
       std::copy(bytes.data(), bytes.data() + field.triangles.size() * sizeof(double),
                 reinterpret_cast<char*>(field.triangles.data()));
     }
+    // The soft limit only: each request sets its own (this process's footprint so far stays).
     g_memoryLimit = flowform::mesherMemoryLimitBytes(opt.maxCells);
-    const rlimit limit{static_cast<rlim_t>(g_memoryLimit), static_cast<rlim_t>(g_memoryLimit)};
+    rlimit limit{};
+    getrlimit(RLIMIT_AS, &limit);
+    limit.rlim_cur = std::min<rlim_t>(static_cast<rlim_t>(g_memoryLimit), limit.rlim_max);
     setrlimit(RLIMIT_AS, &limit);
-    const flowform::Mesh mesh = flowform::meshWithGmsh(opt, field.empty() ? nullptr : &field);
-    return writeResult(flowform::packMesh(mesh)) ? 0 : 1;
+    writeResult(flowform::packMesh(flowform::meshWithGmsh(opt, field.empty() ? nullptr : &field)));
   } catch (const flowform::InputError& e) {
-    return writeResult(flowform::packMeshError(true, e.what())) ? 0 : 1;
+    writeResult(flowform::packMeshError(true, e.what()));
   } catch (const std::bad_alloc&) {
-    return writeResult(flowform::packMeshError(true, outOfMemoryMessage())) ? 0 : 1;
+    writeResult(flowform::packMeshError(true, outOfMemoryMessage()));
   } catch (const std::string& s) {  // gmsh outside the steps that translate its errors
-    return writeResult(flowform::packMeshError(true, "mesh file '" + g_meshPath + "': gmsh failed: " + s)) ? 0 : 1;
+    writeResult(flowform::packMeshError(true, "mesh file '" + g_meshPath + "': gmsh failed: " + s));
   } catch (const std::exception& e) {
-    return writeResult(flowform::packMeshError(false, e.what())) ? 0 : 1;
+    writeResult(flowform::packMeshError(false, e.what()));
   }
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  prctl(PR_SET_PDEATHSIG, SIGKILL);  // the run that started us is gone: so are we
+  if (argc != 1) {
+    std::cerr << "usage: flowform-mesh (started by flowform, which sends it requests)\n";
+    return 1;
+  }
+  std::set_terminate(onTerminate);
+  std::string dir;
+  while (std::getline(std::cin, dir)) {
+    serve(dir);
+    answer();
+  }
+  return 0;
 }
