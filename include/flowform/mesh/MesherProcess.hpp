@@ -3,7 +3,8 @@
 // (a zero or negative size does it), runs a .geo's loops as long as they go, and allocates
 // whatever a size asks for. In a child process each of these ends the child, under a time
 // limit (Mesh/Time Limit) and a memory limit (from Mesh/Maximum Cells), and comes back to the
-// run as bad input (exit 2) naming the file and gmsh's own last error.
+// run as bad input (exit 2) naming the file and gmsh's own last error. The mesher is started
+// at the first mesh and kept for the run's others (a crashed or stopped one is replaced).
 #pragma once
 
 #include "flowform/mesh/Mesh.hpp"
