@@ -19,15 +19,17 @@ set(FLOWFORM_BAD_INPUT_OUT ${CMAKE_CURRENT_BINARY_DIR}/regression/bad_input)
 set(FLOWFORM_CHECK_EXIT ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_exit.py)
 
 # flowform_exit_test(NAME CASE case.xml [SET P=V ...] [ARGS ...] [CONTAINS text ...]
-#                    [STATUS n] [NP n] [CONVERGED | OUTDIR_IS_A_FILE | SUMMARY_IS_A_DIRECTORY])
+#                    [STATUS n] [NP n] [LABELS l ...]
+#                    [CONVERGED | OUTDIR_IS_A_FILE | SUMMARY_IS_A_DIRECTORY | CHECK option ...])
 #   Runs flowform on bad_input/CASE with -o <build>/regression/bad_input/NAME, the --set
 #   overrides and extra arguments, and checks exit status n (default 2), that stderr
 #   contains each CONTAINS text, and that nothing was written (or, with CONVERGED, that
 #   summary.json says converged; with OUTDIR_IS_A_FILE / SUMMARY_IS_A_DIRECTORY, that the
-#   file or directory put in the way first is left as it was). NP n > 1 runs it under
-#   mpiexec on n ranks.
+#   file or directory put in the way first is left as it was; with CHECK, check_exit.py's
+#   options as given instead). NP n > 1 runs it under mpiexec on n ranks. LABELS: besides
+#   `regression`.
 function(flowform_exit_test name)
-  cmake_parse_arguments(ARG "CONVERGED;OUTDIR_IS_A_FILE;SUMMARY_IS_A_DIRECTORY" "CASE;STATUS;NP" "SET;ARGS;CONTAINS" ${ARGN})
+  cmake_parse_arguments(ARG "CONVERGED;OUTDIR_IS_A_FILE;SUMMARY_IS_A_DIRECTORY" "CASE;STATUS;NP" "SET;ARGS;CONTAINS;CHECK;LABELS" ${ARGN})
   if(NOT DEFINED ARG_STATUS)
     set(ARG_STATUS 2)
   endif()
@@ -42,6 +44,8 @@ function(flowform_exit_test name)
     list(APPEND check --outdir-is-a-file)
   elseif(ARG_SUMMARY_IS_A_DIRECTORY)
     list(APPEND check --summary-is-a-directory)
+  elseif(ARG_CHECK)
+    list(APPEND check ${ARG_CHECK})
   else()
     list(APPEND check --no-output)
   endif()
@@ -50,7 +54,7 @@ function(flowform_exit_test name)
     list(APPEND command --set ${assignment})
   endforeach()
   list(APPEND command ${ARG_ARGS})
-  set(labels regression)
+  set(labels regression ${ARG_LABELS})
   if(ARG_NP AND ARG_NP GREATER 1)
     set(command ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${ARG_NP} ${command})
   endif()
