@@ -6,13 +6,11 @@
 #include <filesystem>
 #include <mpi.h>
 #include <thread>
-#include <unistd.h>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include <Teuchos_TimeMonitor.hpp>
-#include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
 #include "flowform/drivers/CaseOverrides.hpp"

@@ -14,6 +14,7 @@
 #include <Teuchos_XMLObject.hpp>
 #include <Teuchos_XMLParameterListCoreHelpers.hpp>
 
+#include "flowform/core/Files.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Strings.hpp"
 
@@ -237,12 +238,9 @@ Teuchos::RCP<Teuchos::ParameterList> readCaseText(const std::string& input, cons
 }
 
 Teuchos::RCP<Teuchos::ParameterList> readCaseFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("case file '" + path + "' cannot be read");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) throw InputError("case file '" + path + "' cannot be read");
-  return readCaseText(bytes.str(), path);
+  std::string bytes;
+  if (!readWholeFile(path, bytes)) throw InputError("case file '" + path + "' cannot be read");
+  return readCaseText(bytes, path);
 }
 
 }  // namespace flowform

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "flowform/core/Files.hpp"
 #include "flowform/core/InputError.hpp"
 
 namespace flowform {
@@ -30,11 +31,9 @@ bool isResultFile(const std::string& name) {
 /// Creating (and removing) a directory in `dir` is the only sure test that we may write
 /// there: access() says yes to root on a read-only file system and in /proc.
 bool canCreateIn(const fs::path& dir) {
-  std::string pattern = (dir / ".flowform-probe-XXXXXX").string();
-  std::vector<char> buffer(pattern.begin(), pattern.end());
-  buffer.push_back('\0');
-  if (!mkdtemp(buffer.data())) return false;
-  rmdir(buffer.data());
+  const std::string probe = makeUniqueDirectory((dir / ".flowform-probe-").string());
+  if (probe.empty()) return false;
+  rmdir(probe.c_str());
   return true;
 }
 
@@ -89,12 +88,9 @@ ResultSet::ResultSet(const std::string& outDir) : m_outDir(outDir) {
   std::error_code ec;
   fs::create_directories(outDir, ec);
   if (ec) throw std::runtime_error("cannot create the output directory '" + outDir + "': " + ec.message());
-  std::string pattern = (fs::path(outDir) / ".flowform-partial-XXXXXX").string();
-  std::vector<char> buffer(pattern.begin(), pattern.end());
-  buffer.push_back('\0');
-  if (!mkdtemp(buffer.data()))
+  m_staging = makeUniqueDirectory((fs::path(outDir) / ".flowform-partial-").string());
+  if (m_staging.empty())
     throw std::runtime_error("cannot create a staging directory in '" + outDir + "': " + std::strerror(errno));
-  m_staging = buffer.data();
 }
 
 ResultSet::~ResultSet() {

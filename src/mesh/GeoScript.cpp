@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "flowform/core/Files.hpp"
 #include "flowform/core/InputError.hpp"
 
 namespace flowform {
@@ -92,11 +93,9 @@ bool insideFolder(const fs::path& dir, const std::string& file, fs::path& resolv
 
 void checkFile(const fs::path& path, std::vector<fs::path>& visiting) {
   const std::string where = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("mesh file '" + where + "' cannot be read");
-  std::ostringstream os;
-  os << in.rdbuf();
-  const std::vector<Token> t = tokenize(os.str(), where);
+  std::string text;
+  if (!readWholeFile(where, text)) throw InputError("mesh file '" + where + "' cannot be read");
+  const std::vector<Token> t = tokenize(text, where);
   const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
   auto refuse = [&](int line, const std::string& what) {
     throw InputError("mesh file '" + where + "', line " + std::to_string(line) + ": " + what +

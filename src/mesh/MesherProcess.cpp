@@ -21,6 +21,7 @@
 #include <thread>
 #include <vector>
 
+#include "flowform/core/Files.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/mesh/MeshPacking.hpp"
@@ -38,13 +39,11 @@ class ScratchDirectory {
  public:
   ScratchDirectory() {
     const char* tmp = std::getenv("TMPDIR");
-    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/flowform-mesh-XXXXXX";
-    std::vector<char> buffer(pattern.begin(), pattern.end());
-    buffer.push_back('\0');
-    if (!mkdtemp(buffer.data()))
-      throw std::runtime_error("cannot create a scratch directory for the mesher in '" +
-                               pattern.substr(0, pattern.size() - 21) + "': " + std::strerror(errno));
-    m_path = buffer.data();
+    const std::string parent = tmp && *tmp ? tmp : "/tmp";
+    m_path = makeUniqueDirectory(parent + "/flowform-mesh-");
+    if (m_path.empty())
+      throw std::runtime_error("cannot create a scratch directory for the mesher in '" + parent + "': " +
+                               std::strerror(errno));
   }
   ~ScratchDirectory() {
     std::error_code ec;
@@ -73,13 +72,6 @@ std::string mesherProgram() {
                            "' nor where the build put it (set FLOWFORM_MESHER to its path)");
 }
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
 /// gmsh's last "Error" line in its log (or the log's last line), for a mesher that died.
 std::string lastGmshError(const std::string& log) {
   std::istringstream is(log);
@@ -99,19 +91,22 @@ std::string lastGmshError(const std::string& log) {
 /// next request starts a new one.
 class Mesher {
  public:
-  ~Mesher() { stop(false); }
+  ~Mesher() {
+    stop(false);
+    if (m_logFd >= 0) close(m_logFd);
+  }
 
   /// Sends `dir` and waits up to `seconds` for the answer. False when the mesher died or was
   /// stopped at the limit (`timedOut`); `status` is then its wait status.
   bool request(const std::string& dir, double seconds, bool& timedOut, int& status, std::string& log) {
     if (m_pid > 0 && waitpid(m_pid, &status, WNOHANG) == m_pid) forget();
     if (m_pid <= 0) start();
-    const auto logStart = fileSize(m_log.path() + "/gmsh.log");
+    const off_t logStart = m_logFd >= 0 ? lseek(m_logFd, 0, SEEK_END) : 0;
     const std::string line = dir + "\n";
     timedOut = false;
     bool answered = send(m_socket, line.data(), line.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(line.size());
     if (answered) answered = awaitAnswer(seconds, timedOut);
-    log = readFrom(m_log.path() + "/gmsh.log", logStart);
+    log = logFrom(logStart);
     if (answered) return true;
     stop(timedOut);
     status = m_status;
@@ -124,13 +119,13 @@ class Mesher {
     int fds[2];
     if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0)
       throw std::runtime_error(std::string("cannot connect to the mesher: ") + std::strerror(errno));
-    const std::string logPath = m_log.path() + "/gmsh.log";
+    if (m_logFd < 0) openLog();
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, fds[1], 0);
     posix_spawn_file_actions_adddup2(&actions, fds[1], 3);
-    posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0600);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    posix_spawn_file_actions_adddup2(&actions, m_logFd, 1);
+    posix_spawn_file_actions_adddup2(&actions, m_logFd, 2);
     std::vector<char*> argv{const_cast<char*>(program.c_str()), nullptr};
     const int spawned = posix_spawn(&m_pid, program.c_str(), &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -178,20 +173,29 @@ class Mesher {
     m_socket = -1;
     m_pid = -1;
   }
-  static std::uintmax_t fileSize(const std::string& path) {
-    std::error_code ec;
-    const auto n = fs::file_size(path, ec);
-    return ec ? 0 : n;
+  /// The mesher's output (gmsh's log) for all its requests: a file removed from its folder as
+  /// soon as it is made, so that nothing is left behind however the run ends (MPI_Abort too).
+  void openLog() {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/flowform-mesh-log-XXXXXX";
+    std::vector<char> buffer(pattern.begin(), pattern.end());
+    buffer.push_back('\0');
+    m_logFd = mkostemp(buffer.data(), O_CLOEXEC | O_APPEND);
+    if (m_logFd < 0) throw std::runtime_error(std::string("cannot create the mesher's log: ") + std::strerror(errno));
+    unlink(buffer.data());
   }
-  static std::string readFrom(const std::string& path, std::uintmax_t offset) {
-    std::ifstream in(path, std::ios::binary);
-    in.seekg(static_cast<std::streamoff>(offset));
-    std::ostringstream os;
-    os << in.rdbuf();
-    return os.str();
+  std::string logFrom(off_t offset) const {
+    std::string text;
+    char chunk[4096];
+    ssize_t n;
+    while (m_logFd >= 0 && (n = pread(m_logFd, chunk, sizeof chunk, offset)) > 0) {
+      text.append(chunk, static_cast<std::size_t>(n));
+      offset += n;
+    }
+    return text;
   }
 
-  ScratchDirectory m_log;  ///< the mesher's output, gmsh's log, for all its requests
+  int m_logFd = -1;
   pid_t m_pid = -1;
   int m_socket = -1;
   int m_status = 0;
@@ -228,8 +232,8 @@ Mesh meshInProcess(const ReadOptions& opt, const SizeField* sizeField) {
     throw InputError("mesh file '" + opt.path + "': gmsh did not finish within " + limit.str() +
                      " s (Mesh/Time Limit) — a .geo loop that does not end, or a mesh far finer than "
                      "intended? gmsh's last message: " + lastGmshError(log));
-  const std::string result = readFile(dir + "/result.bin");
-  if (!result.empty()) return unpackMesh(std::vector<char>(result.begin(), result.end()));
+  std::string result;
+  if (readWholeFile(dir + "/result.bin", result) && !result.empty()) return unpackMesh(std::vector<char>(result.begin(), result.end()));
   const std::string how = !answered && WIFSIGNALED(status)
                               ? "crashed (signal " + std::to_string(WTERMSIG(status)) + ", " + strsignal(WTERMSIG(status)) + ")"
                               : "stopped (exit status " + std::to_string(WEXITSTATUS(status)) + ")";

@@ -21,6 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "flowform/core/Files.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/mesh/ReadOptions.hpp"
 #include "flowform/mesh/MeshPacking.hpp"
@@ -86,11 +87,8 @@ void serve(const std::string& dir) {
     const flowform::ReadOptions opt = flowform::readOptionsFromJson(nlohmann::json::parse(in));
     g_meshPath = opt.path;
     flowform::SizeField field;
-    std::ifstream sizes(dir + "/size_field.bin", std::ios::binary);
-    if (sizes) {
-      std::ostringstream os;
-      os << sizes.rdbuf();
-      const std::string bytes = os.str();
+    std::string bytes;
+    if (flowform::readWholeFile(dir + "/size_field.bin", bytes)) {
       field.triangles.resize(bytes.size() / sizeof(double));
       std::copy(bytes.data(), bytes.data() + field.triangles.size() * sizeof(double),
                 reinterpret_cast<char*>(field.triangles.data()));

@@ -16,6 +16,7 @@
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/NumberRange.hpp"
 #include "flowform/drivers/CaseParameters.hpp"
+#include "flowform/core/Files.hpp"
 #include "flowform/io/CaseFile.hpp"
 
 namespace {
@@ -27,10 +28,9 @@ namespace fs = std::filesystem;
 const char* const kChannel = "regression/bad_input/channel_small.xml";
 
 std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  std::string text;
+  flowform::readWholeFile(path, text);
+  return text;
 }
 
 /// A tiny case: Material with `material` inside, then a Solver list.
