@@ -1,0 +1,2 @@
+#pragma once
+#include "flowform/core/Other.hpp"  // same stage: allowed

@@ -1,0 +1,2 @@
+#include "flowform/mesh/Bad.hpp"  // the last stage includes anything
+#include <flowform/io/Writer.hpp>

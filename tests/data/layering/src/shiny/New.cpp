@@ -1,0 +1,1 @@
+#include "flowform/core/Fine.hpp"  // a folder not in the stage table: a violation
