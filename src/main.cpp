@@ -17,7 +17,7 @@
 #include "flowform/core/Budget.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
-#include "flowform/drivers/AdaptiveLoop.hpp"
+#include "flowform/estimation/AdaptiveLoop.hpp"
 #include "flowform/drivers/CaseParameters.hpp"
 #include "flowform/drivers/Simulation.hpp"
 #include "flowform/io/CaseFile.hpp"
@@ -143,7 +143,8 @@ int main(int argc, char* argv[]) {
     };
     if (flowform::adaptivityRequested(*params)) {
       std::string message;
-      const int status = flowform::runAdaptive(*params, baseDir.empty() ? "." : baseDir, comm, outDir, &message);
+      const int status = flowform::runAdaptive(
+          *params, flowform::Simulation::factory(baseDir.empty() ? "." : baseDir, comm), outDir, &message);
       return finish(status, message);
     }
     flowform::Simulation simulation(*params, baseDir.empty() ? "." : baseDir, comm);

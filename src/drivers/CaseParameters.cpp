@@ -8,7 +8,7 @@
 #include "flowform/bc/BoundaryConditions.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/NumberRange.hpp"
-#include "flowform/drivers/FreeSurfaceLoop.hpp"
+#include "flowform/freesurface/FreeSurfaceLoop.hpp"
 #include "flowform/drivers/OutputFields.hpp"
 #include "flowform/mesh/MeshReader.hpp"
 #include "flowform/solvers/NonlinearSolver.hpp"

@@ -45,7 +45,7 @@ usage: free_surface_checks.py FLOWFORM SOURCE_DIR WORKDIR
 6. Sensitivities on a moving shape: dF/dnu by DDM (frozen shape) = the FD on the frozen shape to
    1e-5 (measured 9e-7); the FD with re-converged surfaces is reported (fd_moving_shape) and
    differs (shape_gap > 0; measured 0.49 %); d(gap)/dnu is 0 on the frozen shape and not with the
-   surfaces re-converged. The total derivatives through the surface (drivers/ShapeDerivative)
+   surfaces re-converged. The total derivatives through the surface (sensitivity/ShapeDerivative)
    equal the FD with re-converged surfaces: dF/dnu to 1e-4 (measured 1.4e-6), d(gap)/dnu to 1e-3
    (7e-5); on the die swell d(swell)/dn and d(outflow)/dn to 1e-3 (6e-7, 4e-5; the frozen
    d(outflow)/dn is 2.6 times the total). The bounds leave the FD's own error room: central

@@ -145,16 +145,16 @@ TEUCHOS_UNIT_TEST(Assembly, ParallelEqualsSerialChannel) {
       const ParameterList params = channelCase(type, geometry);
       Simulation par(params, "", comm);
       // The conditions as the Simulation built them, to impose them on the state.
-      const BoundaryConditions parBcs(par.parameters().sublist("Boundary Conditions"), par.mesh(), par.dofMap());
+      const BoundaryConditions parBcs(par.parameters().sublist("Boundary Conditions"), par.problem().mesh(), par.problem().dofMap());
       double pathDiff = 0.0;
       const Gathered gp =
-          assembleAndGather(par.mesh(), par.dofMap(), par.model().assembler(), parBcs, state, pathDiff);
+          assembleAndGather(par.problem().mesh(), par.problem().dofMap(), par.problem().model().assembler(), parBcs, state, pathDiff);
       TEST_COMPARE(globalMax(*comm, pathDiff), <=, 1e-14);
       Gathered gs;
       if (comm->getRank() == 0) {
         Simulation ser(params, "", serialComm);
-        const BoundaryConditions serBcs(ser.parameters().sublist("Boundary Conditions"), ser.mesh(), ser.dofMap());
-        gs = assembleAndGather(ser.mesh(), ser.dofMap(), ser.model().assembler(), serBcs, state, pathDiff);
+        const BoundaryConditions serBcs(ser.parameters().sublist("Boundary Conditions"), ser.problem().mesh(), ser.problem().dofMap());
+        gs = assembleAndGather(ser.problem().mesh(), ser.problem().dofMap(), ser.problem().model().assembler(), serBcs, state, pathDiff);
       }
       out << "channel, " << type << ", " << geometry << ": ";
       TEST_ASSERT(sameAssembly(gp, gs, *comm, out));

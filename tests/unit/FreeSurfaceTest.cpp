@@ -26,7 +26,7 @@
 #include "StructuredMesh.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/discretization/DofMap.hpp"
-#include "flowform/drivers/FreeSurfaceLoop.hpp"
+#include "flowform/freesurface/FreeSurfaceLoop.hpp"
 #include "flowform/freesurface/FreeSurface.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
 

@@ -20,7 +20,7 @@
 #include "flowform/core/Log.hpp"
 #include "flowform/assembly/SensitivityParameter.hpp"
 #include "flowform/drivers/Simulation.hpp"
-#include "flowform/drivers/ContactStatusLoop.hpp"
+#include "flowform/solvers/ContactStatusLoop.hpp"
 #include "StructuredMesh.hpp"
 
 #include <Teuchos_XMLParameterListHelpers.hpp>
@@ -243,11 +243,11 @@ TEUCHOS_UNIT_TEST(Sensitivity, ExtrusionFrictionSensitivityIsExactlyZeroInStickA
         bcs.sublist(bcs.name(it)).set("Friction Coefficient", nu);
     Simulation sim(*params, FLOWFORM_SOURCE_DIR "/xml", comm);
     TEST_ASSERT(sim.run().converged);
-    const auto& walls = sim.contactWalls();
+    const auto& walls = sim.problem().contactWalls();
 
-    const auto branches = wallBranches(walls, sim.dofMap(), sim.solution());
+    const auto branches = wallBranches(walls, sim.problem().dofMap(), sim.problem().solution());
     // Per node: does any wall through it slip there?
-    std::vector<int> slips(sim.mesh().numNodes(), 0), walled(sim.mesh().numNodes(), 0);
+    std::vector<int> slips(sim.problem().mesh().numNodes(), 0), walled(sim.problem().mesh().numNodes(), 0);
     int count[5] = {0, 0, 0, 0, 0};
     for (size_t w = 0; w < walls.size(); ++w)
       for (int k = 0; k < walls[w].numNodes(); ++k) {
@@ -256,14 +256,14 @@ TEUCHOS_UNIT_TEST(Sensitivity, ExtrusionFrictionSensitivityIsExactlyZeroInStickA
         slips[node] |= branches[w][k] == FrictionBranch::Slip;
         ++count[static_cast<int>(branches[w][k])];
       }
-    Vector d(sim.dofMap().ownedMap());
-    sim.model().assembler().parameterDerivative(sim.solution(), parseSensitivityParameter("Friction Coefficient", walls),
+    Vector d(sim.problem().dofMap().ownedMap());
+    sim.problem().model().assembler().parameterDerivative(sim.problem().solution(), parseSensitivityParameter("Friction Coefficient", walls),
                                                 d);
     auto v = d.getLocalViewHost(Tpetra::Access::ReadOnly);
     int nonzeroWithoutSlip = 0, nonzeroAtSlip = 0, zeroWallRows = 0;
-    for (LO n = 0; n < sim.dofMap().numOwnedNodes(); ++n) {
-      const GO node = sim.dofMap().overlapNodes()[n];
-      const DofMap& dofs = sim.dofMap();
+    for (LO n = 0; n < sim.problem().dofMap().numOwnedNodes(); ++n) {
+      const GO node = sim.problem().dofMap().overlapNodes()[n];
+      const DofMap& dofs = sim.problem().dofMap();
       const bool nonzero = v(dofs.dof(n, kUx), 0) != 0.0 || v(dofs.dof(n, kUy), 0) != 0.0 || v(dofs.dof(n, kP), 0) != 0.0;
       if (slips[node]) nonzeroAtSlip += nonzero;
       else nonzeroWithoutSlip += nonzero;

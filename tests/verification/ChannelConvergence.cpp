@@ -42,7 +42,7 @@ void gauss01(int m, std::vector<double>& x, std::vector<double>& w) {
 /// per cell (collapsed onto triangles): exact to machine precision for the interpolated
 /// fields and accurate to far below the discretization error for the exact ones.
 Errors l2Errors(const Simulation& sim, const ChannelExact& exact) {
-  const Mesh& mesh = sim.mesh();
+  const Mesh& mesh = sim.problem().mesh();
   const FieldSet fields = sim.gatherFields();
   const auto& u = fields.nodal[0].values;
   const auto& p = fields.nodal[1].values;
@@ -119,7 +119,7 @@ Errors solve(const std::string& cellType, int N, Material m, double beta, double
   exact.n = m.n;
   exact.gamma = m.gamma;
   Errors e = l2Errors(sim, exact);
-  e.dofs = static_cast<int>(sim.dofMap().ownedMap()->getGlobalNumElements());
+  e.dofs = static_cast<int>(sim.problem().dofMap().ownedMap()->getGlobalNumElements());
   e.converged = report.converged;
   e.seconds = seconds;
   return e;

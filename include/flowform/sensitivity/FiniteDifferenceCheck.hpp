@@ -86,7 +86,7 @@ class FiniteDifferenceCheck {
     bool hasMoving = false;
     double fdMoving = 0.0;  ///< central difference with re-converged free surfaces
     bool hasTotal = false;
-    double ddmTotal = 0.0;  ///< the derivative through the moving shape (drivers/ShapeDerivative)
+    double ddmTotal = 0.0;  ///< the derivative through the moving shape (sensitivity/ShapeDerivative)
   };
   /// A wall node whose status or friction branch differs between the runs.
   struct ChangedNode {

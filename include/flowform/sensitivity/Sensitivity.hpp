@@ -56,7 +56,7 @@ class Sensitivity {
   bool holdScalesInCheck() const { return m_holdScales; }
   /// With free surfaces: whether the derivatives through the moving shape are wanted.
   bool totalShapeRequested() const { return m_totalShapeRequested; }
-  /// The derivatives through the moving free surfaces (drivers/ShapeDerivative), when made:
+  /// The derivatives through the moving free surfaces (sensitivity/ShapeDerivative), when made:
   /// response → parameter → value (the finite-difference check compares them with its
   /// re-converged runs).
   void setTotalShapeDerivatives(std::map<std::string, std::map<std::string, double>> d) { m_totalShape = std::move(d); }

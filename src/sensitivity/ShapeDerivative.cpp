@@ -1,4 +1,4 @@
-#include "flowform/drivers/ShapeDerivative.hpp"
+#include "flowform/sensitivity/ShapeDerivative.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,8 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "flowform/core/Log.hpp"
-#include "flowform/drivers/Simulation.hpp"
-#include "flowform/drivers/UpdateLinearization.hpp"
+#include "flowform/freesurface/UpdateLinearization.hpp"
+#include "flowform/problem/Problem.hpp"
+#include "flowform/sensitivity/Sensitivity.hpp"
 
 namespace flowform {
 
@@ -23,15 +24,14 @@ void ShapeDerivative::report(nlohmann::json& summary) const {
     for (const auto& [parameter, value] : byParameter) s[response][parameter] = value;
 }
 
-ShapeDerivative totalShapeDerivative(Simulation& sim) {
+ShapeDerivative totalShapeDerivative(Problem& problem, const Sensitivity& sensitivity) {
   const auto start = std::chrono::steady_clock::now();
   ShapeDerivative out;
-  const Sensitivity& sensitivity = sim.sensitivity();
   if (!sensitivity.computed()) {
     out.failure = "no DDM sensitivities to extend";
     return out;
   }
-  const UpdateLinearization lin(sim, true);
+  const UpdateLinearization lin(problem.linearizationState(), true);
   if (!lin.failure().empty()) {
     out.failure = lin.failure();
     return out;

@@ -16,7 +16,8 @@
 
 namespace flowform {
 
-class Simulation;
+class Problem;
+class Sensitivity;
 
 struct ShapeDerivative {
   bool computed = false;
@@ -33,8 +34,8 @@ struct ShapeDerivative {
 };
 
 /// The total derivatives of the responses with respect to the sensitivity parameters at the
-/// converged state of `sim` (after Sensitivity::compute). Moves the mesh and restores it; the
-/// factors of K_t at the converged state are left in the model.
-ShapeDerivative totalShapeDerivative(Simulation& sim);
+/// converged state of `problem` (after `sensitivity`'s compute there). Moves the mesh and
+/// restores it; the factors of K_t at the converged state are left in the model.
+ShapeDerivative totalShapeDerivative(Problem& problem, const Sensitivity& sensitivity);
 
 }  // namespace flowform

@@ -25,16 +25,16 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "flowform/core/TpetraTypes.hpp"
+#include "flowform/estimation/CaseRun.hpp"
 
 namespace flowform {
 
-/// Runs the adaptive loop of the validated case and writes the last cycle's results, with the
-/// list of cycles, into `outDir`. Returns the exit status: 0, or 3 when a solve did not
+/// Runs the adaptive loop of the validated case (each cycle's run made by `makeRun`) and writes
+/// the last cycle's results, with the list of cycles, into `outDir`. Returns the exit status: 0, or 3 when a solve did not
 /// converge or the target was not met within Maximum Cycles / Maximum Dofs (or a target response is
 /// zero to round-off, or the Solver/Time Limit budget is spent); `message` (optional) returns
 /// summary.json's "message".
-int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& baseDir,
-                const Teuchos::RCP<const Comm>& comm, const std::string& outDir, std::string* message = nullptr);
+int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& makeRun, const std::string& outDir,
+                std::string* message = nullptr);
 
 }  // namespace flowform

@@ -1,4 +1,4 @@
-#include "flowform/drivers/UpdateLinearization.hpp"
+#include "flowform/freesurface/UpdateLinearization.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,6 @@
 #include <Teuchos_SerialDenseSolver.hpp>
 
 #include "flowform/discretization/SolutionTransfer.hpp"
-#include "flowform/drivers/Simulation.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
 
 namespace flowform {
@@ -16,14 +15,14 @@ namespace {
 constexpr double kNoRelease = std::numeric_limits<double>::infinity();  // statuses held
 }
 
-UpdateLinearization::UpdateLinearization(Simulation& sim, bool responses) : m_sim(sim) {
-  const DofMap& dofMap = sim.dofMap();
-  const Geometry geometry = sim.physics().kernel.geometry;
-  m_state = Teuchos::rcp(new Vector(sim.solution(), Teuchos::Copy));
+UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bool responses) : m_at(at) {
+  const DofMap& dofMap = at.dofMap;
+  const Geometry geometry = at.geometry;
+  m_state = Teuchos::rcp(new Vector(at.solution, Teuchos::Copy));
   const Vector& q = *m_state;
-  const Mesh base = sim.mesh();
+  const Mesh base = at.mesh;
 
-  m_step = sim.freeSurfaces().step(base, dofMap, replicate(q, dofMap), sim.contactWalls(), geometry, kNoRelease);
+  m_step = at.surfaces.step(base, dofMap, replicate(q, dofMap), at.walls, geometry, kNoRelease);
   if (!m_step.failure.empty()) {
     m_failure = m_step.failure;
     return;
@@ -45,11 +44,11 @@ UpdateLinearization::UpdateLinearization(Simulation& sim, bool responses) : m_si
     d[m_step.moves[m_unknowns[j].move].node] = {amount * dir[0], amount * dir[1]};
     for (const FreeSurfaceStep::Drag& drag : m_step.drags)
       if (drag.end == m_unknowns[j].move) d[drag.node] = {drag.fraction * amount * dir[0], drag.fraction * amount * dir[1]};
-    sim.moveNodes(extension.positions(d));
+    at.moveNodes(extension.positions(d));
   };
 
   // Pass 1, the positions: ∂R/∂b_j (with the interior following), ∂U/∂b_j, ∂φ/∂b_j.
-  const double eps = 1e-6 * sim.freeSurfaces().lengthScale();
+  const double eps = 1e-6 * at.surfaces.lengthScale();
   MultiVector rx(q.getMap(), nb);
   m_G.shape(nb, nb);
   m_phiB.assign(responses ? nb : 0, {});
@@ -58,11 +57,11 @@ UpdateLinearization::UpdateLinearization(Simulation& sim, bool responses) : m_si
   try {
     for (int j = 0; j < nb; ++j) {
       moveUnknown(j, eps);
-      sim.model().assembler().residual(q, rPlus);
+      at.model.assembler().residual(q, rPlus);
       const std::vector<double> uPlus = updateAt(q);
       const auto phiPlus = responses ? responsesAt(q) : std::map<std::string, double>();
       moveUnknown(j, -eps);
-      sim.model().assembler().residual(q, rMinus);
+      at.model.assembler().residual(q, rMinus);
       const std::vector<double> uMinus = updateAt(q);
       const auto phiMinus = responses ? responsesAt(q) : std::map<std::string, double>();
       rx.getVectorNonConst(j)->update(-1.0 / (2 * eps), rPlus, 1.0 / (2 * eps), rMinus, 0.0);  // −∂R/∂b_j
@@ -70,14 +69,14 @@ UpdateLinearization::UpdateLinearization(Simulation& sim, bool responses) : m_si
       for (const auto& [name, value] : phiPlus) m_phiB[j][name] = (value - phiMinus.at(name)) / (2 * eps);
     }
   } catch (const std::exception& e) {  // a move that inverts a cell
-    sim.moveNodes(base.coords);
+    at.moveNodes(base.coords);
     m_failure = std::string("moving a surface node: ") + e.what();
     return;
   }
-  sim.moveNodes(base.coords);
+  at.moveNodes(base.coords);
 
   // Y = −K_t⁻¹ ∂R/∂b with the factors at the state; then U_q Y_j (and φ_q Y_j).
-  FlowModel& model = sim.model();
+  FlowModel& model = at.model;
   model.restartLinearization();
   model.computeJacobian(q);
   MultiVector Y(q.getMap(), nb);
@@ -111,12 +110,12 @@ UpdateLinearization::UpdateLinearization(Simulation& sim, bool responses) : m_si
 }
 
 std::vector<double> UpdateLinearization::updateAt(const Vector& x) const {
-  const FreeSurfaceStep s = m_sim.freeSurfaces().step(m_sim.mesh(), m_sim.dofMap(), replicate(x, m_sim.dofMap()),
-                                                      m_sim.contactWalls(), m_sim.physics().kernel.geometry, kNoRelease);
+  const FreeSurfaceStep s = m_at.surfaces.step(m_at.mesh, m_at.dofMap, replicate(x, m_at.dofMap),
+                                                      m_at.walls, m_at.geometry, kNoRelease);
   std::vector<double> u(m_unknowns.size(), 0.0);
   for (size_t j = 0; j < m_unknowns.size(); ++j) {
     const FreeSurfaceStep::Move& m = s.moves[m_unknowns[j].move];
-    const auto& p = m_sim.mesh().coords[m.node];
+    const auto& p = m_at.mesh.coords[m.node];
     const auto& d = m_unknowns[j].direction;
     u[j] = (p[0] + m.residual[0]) * d[0] + (p[1] + m.residual[1]) * d[1];  // where the update puts it
   }
@@ -124,7 +123,7 @@ std::vector<double> UpdateLinearization::updateAt(const Vector& x) const {
 }
 
 std::map<std::string, double> UpdateLinearization::responsesAt(const Vector& x) const {
-  return m_sim.responses().evaluate(x, m_sim.mesh(), m_sim.dofMap(), m_sim.model().assembler(), m_sim.contactWalls());
+  return m_at.responses.evaluate(x, m_at.mesh, m_at.dofMap, m_at.model.assembler(), m_at.walls);
 }
 
 std::vector<double> UpdateLinearization::updateAlong(const Vector& d) const {

@@ -1,4 +1,4 @@
-#include "flowform/drivers/AdaptiveLoop.hpp"
+#include "flowform/estimation/AdaptiveLoop.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -11,7 +11,6 @@
 
 #include "flowform/core/Budget.hpp"
 #include "flowform/core/Log.hpp"
-#include "flowform/drivers/Simulation.hpp"
 #include "flowform/mesh/SizeField.hpp"
 
 namespace flowform {
@@ -42,9 +41,9 @@ constexpr double kMinRatio = 0.125, kMaxRatio = 1.5;  ///< h'/h per cycle at mos
 constexpr double kSmallestSize = 1.0 / 128.0;
 
 /// The next mesh's nodal sizes from the indicators (AdaptiveLoop.hpp).
-std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::string>& targets, double tolerance,
+std::vector<double> nextSizes(const CaseRun& sim, const std::vector<std::string>& targets, double tolerance,
                               double minSize, double maxSize, double maxDofs) {
-  const Mesh& mesh = sim.mesh();
+  const Mesh& mesh = sim.problem().mesh();
   const ErrorEstimate& estimate = sim.errorEstimate();
   std::vector<double> e(mesh.numNodes(), 0.0);
   for (const std::string& name : targets) {
@@ -65,7 +64,7 @@ std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::stri
   const double lambda = sum > 0.0 ? std::pow(0.5 / sum, (s + 2.0) / s) : 0.0;
   // The sizes are those of the mesh as made, where the next mesh is made (the free surfaces'
   // moves stretch both alike: carryShape maps the next mesh as it maps this one).
-  std::vector<double> h = nodalSizes(sim.meshAsMade()), next(h.size());
+  std::vector<double> h = nodalSizes(sim.problem().meshAsMade()), next(h.size());
   double predictedNodes = 0.0;
   for (GO n = 0; n < mesh.numNodes(); ++n) {
     const double ratio = e[n] > 0.0 ? std::clamp(std::pow(lambda / e[n], 1.0 / (s + 2.0)), kMinRatio, kMaxRatio) : kMaxRatio;
@@ -82,8 +81,8 @@ std::vector<double> nextSizes(const Simulation& sim, const std::vector<std::stri
 
 }  // namespace
 
-int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& baseDir,
-                const Teuchos::RCP<const Comm>& comm, const std::string& outDir, std::string* message) {
+int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& makeRun, const std::string& outDir,
+                std::string* message) {
   const Teuchos::ParameterList& adaptivity = caseParams.sublist("Adaptivity");
   const auto targetArray = adaptivity.get<Teuchos::Array<std::string>>("Responses");
   const std::vector<std::string> targets(targetArray.begin(), targetArray.end());
@@ -98,7 +97,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
   Teuchos::ParameterList remeshed = caseParams;
   remeshed.sublist("Mesh").set("Uniform Refinements", 0);
   remeshed.sublist("Mesh").set("Size Factor", 1.0);
-  std::unique_ptr<Simulation> sim, previous;
+  std::unique_ptr<CaseRun> sim, previous;
   SizeField field;
   double minSize = 0.0, maxSize = 0.0;
   bool met = false;
@@ -115,16 +114,15 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
   };
   for (int cycle = 0; cycle < maxCycles; ++cycle) {
     const auto start = std::chrono::steady_clock::now();
-    sim = std::make_unique<Simulation>(cycle == 0 ? caseParams : remeshed, baseDir, comm,
-                                       cycle == 0 ? nullptr : &field);
+    sim = makeRun(cycle == 0 ? caseParams : remeshed, cycle == 0 ? nullptr : &field);
     if (cycle == 0) {  // the targets and the .geo were checked with the case (validateCase)
-      const std::vector<double> h = nodalSizes(sim->meshAsMade());
+      const std::vector<double> h = nodalSizes(sim->problem().meshAsMade());
       maxSize = *std::max_element(h.begin(), h.end());
       minSize = kSmallestSize * *std::min_element(h.begin(), h.end());
     }
-    if (previous) sim->startFrom(*previous);
+    if (previous) sim->problem().startFrom(previous->problem());
     sim->deferFiniteDifferenceCheck();  // only the last cycle's sensitivities are checked
-    log() << "adaptivity: cycle " << cycle << ": " << sim->dofMap().numGlobalDofs() << " dofs\n";
+    log() << "adaptivity: cycle " << cycle << ": " << sim->problem().dofMap().numGlobalDofs() << " dofs\n";
     sim->run();
     if (sim->exitStatus() != 0) {
       why = budgetWasSpent() ? budgetMessage()
@@ -140,10 +138,10 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
     }
     ++done;
     nlohmann::json entry = {{"cycle", cycle},
-                            {"dofs", sim->dofMap().numGlobalDofs()},
-                            {"newton_iterations", sim->report().newtonIterations},
-                            {"contact_changes", sim->contactChanges()},
-                            {"free_surface_iterations", sim->freeSurfaceReport().iterations},
+                            {"dofs", sim->problem().dofMap().numGlobalDofs()},
+                            {"newton_iterations", sim->problem().report().newtonIterations},
+                            {"contact_changes", sim->problem().contactChanges()},
+                            {"free_surface_iterations", sim->problem().freeSurfaceReport().iterations},
                             {"functionals", sim->functionals()},
                             {"error_estimate", estimate.functionals}};
     met = true;
@@ -157,7 +155,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
     }
     entry["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     cycles.push_back(entry);
-    const double resolution = sim->parameters().sublist("Solver").get<double>("Absolute Residual Tolerance");
+    const double resolution = sim->problem().parameters().sublist("Solver").get<double>("Absolute Residual Tolerance");
     for (const std::string& name : targets) {
       const double value = sim->functionals().at(name);
       const auto refined = estimate.refinedFunctionals.find(name);
@@ -185,7 +183,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
       break;
     }
     // On the mesh as made: a free-surface update moved boundary nodes off the .geo's curves.
-    field = sizeFieldOnMesh(sim->meshAsMade(), nextSizes(*sim, targets, tolerance, minSize, maxSize, maxDofs));
+    field = sizeFieldOnMesh(sim->problem().meshAsMade(), nextSizes(*sim, targets, tolerance, minSize, maxSize, maxDofs));
     previous = std::move(sim);
   }
   nlohmann::json block = {{"cycles", cycles},
@@ -197,7 +195,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const std::string& bas
     sim->setNotMet(why);
     log() << "adaptivity: " << why << "\n";
   }
-  if (sim->report().converged) sim->checkSensitivities();
+  if (sim->problem().report().converged) sim->checkSensitivities();
   sim->addSummaryBlock("adaptivity", block);
   sim->writeOutput(outDir);
   if (message) *message = sim->statusMessage();

@@ -12,25 +12,42 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
 #include <Teuchos_SerialDenseMatrix.hpp>
 
+#include "flowform/assembly/Responses.hpp"
 #include "flowform/core/TpetraTypes.hpp"
 #include "flowform/freesurface/FreeSurface.hpp"
+#include "flowform/solvers/FlowModel.hpp"
 
 namespace flowform {
 
-class Simulation;
+/// What the linearization reads and moves of a converged state (problem/Problem gives its own:
+/// Problem::linearizationState): the current mesh, moved through `moveNodes` (which refreshes
+/// what caches geometry and drops the factors) and restored, the model whose factors it leaves
+/// at the state, and the solution it linearizes at.
+struct SurfaceLinearizationState {
+  const Mesh& mesh;
+  const DofMap& dofMap;
+  Geometry geometry;
+  const FreeSurfaces& surfaces;
+  const std::vector<ContactWall>& walls;
+  FlowModel& model;
+  const Responses& responses;
+  const Vector& solution;
+  std::function<void(const std::vector<std::array<double, 2>>&)> moveNodes;
+};
 
 class UpdateLinearization {
  public:
-  /// Linearizes at `sim`'s current solution and mesh (the mesh is moved and restored; the
+  /// Linearizes at the state's solution and mesh (the mesh is moved and restored; the
   /// factors of K_t at the state are left in the model). With `responses`, also ∂φ/∂b + φ_q Y
   /// for every response. failure() says why when it cannot be made.
-  UpdateLinearization(Simulation& sim, bool responses);
+  UpdateLinearization(const SurfaceLinearizationState& state, bool responses);
 
   const std::string& failure() const { return m_failure; }
   int size() const { return static_cast<int>(m_unknowns.size()); }
@@ -57,7 +74,7 @@ class UpdateLinearization {
   std::vector<double> updateAt(const Vector& x) const;
   std::map<std::string, double> responsesAt(const Vector& x) const;
 
-  Simulation& m_sim;
+  SurfaceLinearizationState m_at;  ///< the state linearized at
   std::string m_failure;
   FreeSurfaceStep m_step;
   std::vector<Unknown> m_unknowns;

@@ -1,4 +1,4 @@
-#include "flowform/drivers/FreeSurfaceLoop.hpp"
+#include "flowform/freesurface/FreeSurfaceLoop.hpp"
 
 #include <algorithm>
 #include <chrono>

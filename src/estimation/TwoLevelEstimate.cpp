@@ -1,4 +1,4 @@
-#include "flowform/drivers/TwoLevelEstimate.hpp"
+#include "flowform/estimation/TwoLevelEstimate.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -9,7 +9,6 @@
 #include "flowform/core/Budget.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/discretization/SolutionTransfer.hpp"
-#include "flowform/drivers/Simulation.hpp"
 #include "flowform/estimation/ResponseAdjoint.hpp"
 #include "flowform/mesh/PointLocator.hpp"
 
@@ -20,7 +19,7 @@ namespace {
 /// Nodal shares of the localized estimate on the coarse mesh (TwoLevelEstimate.hpp):
 /// e_i = |Σ_fields R_f,i (ζ_f − I_h ζ_f)_i| at each refined node i, spread over the coarse
 /// cell that holds node i by its shape functions there. Replicated on every rank.
-std::vector<double> coarseIndicator(const Simulation& coarse, const Simulation& fine, const Vector& residual,
+std::vector<double> coarseIndicator(const Problem& coarse, const Problem& fine, const Vector& residual,
                                     const Vector& zeta) {
   const DofMap& fineDofs = fine.dofMap();
   const DofMap& coarseDofs = coarse.dofMap();
@@ -51,9 +50,11 @@ std::vector<double> coarseIndicator(const Simulation& coarse, const Simulation& 
 
 }  // namespace
 
-ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::string>& indicatorResponses) {
+ErrorEstimate twoLevelEstimate(const CaseRun& coarseRun, const CaseRunFactory& makeRun,
+                               const std::vector<std::string>& indicatorResponses) {
   const auto start = std::chrono::steady_clock::now();
   ErrorEstimate estimate;
+  const Problem& coarse = coarseRun.problem();
   const Teuchos::ParameterList& caseParams = coarse.parameters();
   estimate.order = caseParams.sublist("Error Estimation").get<double>("Order");
 
@@ -65,7 +66,8 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
   if (params.isSublist("Adaptivity")) params.remove("Adaptivity");
   if (params.isSublist("Sensitivity")) params.sublist("Sensitivity").set("Finite Difference Check", false);
   const BudgetScope scope("the two-level error estimate (the case on the mesh refined once more)", nullptr);
-  Simulation fine(params, coarse.baseDirectory(), coarse.dofMap().comm(), &coarse.sizeField());
+  const std::unique_ptr<CaseRun> fineRun = makeRun(params, &coarse.sizeField());
+  Problem& fine = fineRun->problem();
   estimate.refinedDofs = static_cast<GO>(fine.dofMap().numGlobalDofs());
 
   // Indicators: the refined residual at I u_h weighted by the refined adjoint there (ζ = c − z),
@@ -83,16 +85,16 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
         estimate.indicators[name] = coarseIndicator(coarse, fine, residual, zeta);
   }
   fine.startFrom(coarse);
-  fine.run();
+  fineRun->run();
   estimate.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (fine.exitStatus() != 0) {
+  if (fineRun->exitStatus() != 0) {
     estimate.failure = "the solve on the refined mesh (" + std::to_string(estimate.refinedDofs) +
                        " dofs) did not converge: " + fine.report().message;
     return estimate;
   }
   const double factor = 1.0 / (1.0 - std::pow(2.0, -estimate.order));
-  estimate.refinedFunctionals = fine.functionals();
-  for (const auto& [name, value] : coarse.functionals()) {
+  estimate.refinedFunctionals = fineRun->functionals();
+  for (const auto& [name, value] : coarseRun.functionals()) {
     auto it = estimate.refinedFunctionals.find(name);
     if (it != estimate.refinedFunctionals.end()) estimate.functionals[name] = factor * (it->second - value);
   }
@@ -103,38 +105,19 @@ ErrorEstimate twoLevelEstimate(const Simulation& coarse, const std::vector<std::
     for (const auto& [name, byParameter] : coarseValues)
       for (const auto& [parameter, value] : byParameter) eta[name][parameter] = factor * (refined[name][parameter] - value);
   };
-  if (coarse.shapeDerivative().computed && fine.shapeDerivative().computed) {
-    estimate.refinedSensitivitiesTotalShape = fine.shapeDerivative().responses;
-    estimateDerivatives(coarse.shapeDerivative().responses, estimate.refinedSensitivitiesTotalShape,
+  if (coarseRun.shapeDerivative().computed && fineRun->shapeDerivative().computed) {
+    estimate.refinedSensitivitiesTotalShape = fineRun->shapeDerivative().responses;
+    estimateDerivatives(coarseRun.shapeDerivative().responses, estimate.refinedSensitivitiesTotalShape,
                         estimate.sensitivitiesTotalShape);
   }
-  if (coarse.sensitivity().computed() && fine.sensitivity().computed()) {
-    estimate.refinedSensitivities = fine.sensitivity().responseDerivatives();
-    estimateDerivatives(coarse.sensitivity().responseDerivatives(), estimate.refinedSensitivities,
+  if (coarseRun.sensitivity().computed() && fineRun->sensitivity().computed()) {
+    estimate.refinedSensitivities = fineRun->sensitivity().responseDerivatives();
+    estimateDerivatives(coarseRun.sensitivity().responseDerivatives(), estimate.refinedSensitivities,
                         estimate.sensitivities);
   }
   estimate.estimated = true;
   estimate.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return estimate;
-}
-
-void ErrorEstimate::report(nlohmann::json& summary) const {
-  if (!failure.empty()) summary["error_estimation"] = {{"method", "Two-Level"}, {"failure", failure}};
-  if (!estimated) return;
-  summary["functionals_error_estimate"] = nlohmann::json::object();
-  for (const auto& [name, eta] : functionals) summary["functionals_error_estimate"][name] = eta;
-  if (!sensitivities.empty()) summary["sensitivities_error_estimate"] = sensitivities;
-  summary["error_estimation"] = {{"method", "Two-Level"},
-                                 {"order", order},
-                                 {"refined_dofs", refinedDofs},
-                                 {"refined_functionals", refinedFunctionals},
-                                 {"seconds", seconds}};
-  if (!refinedSensitivities.empty()) summary["error_estimation"]["refined_sensitivities"] = refinedSensitivities;
-  if (!sensitivitiesTotalShape.empty()) {
-    summary["sensitivities_total_shape_error_estimate"] = sensitivitiesTotalShape;
-    summary["error_estimation"]["refined_sensitivities_total_shape"] = refinedSensitivitiesTotalShape;
-  }
-  if (refinedSurfaceUpdates >= 0) summary["error_estimation"]["refined_free_surface_iterations"] = refinedSurfaceUpdates;
 }
 
 }  // namespace flowform

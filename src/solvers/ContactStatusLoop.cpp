@@ -1,4 +1,4 @@
-#include "flowform/drivers/ContactStatusLoop.hpp"
+#include "flowform/solvers/ContactStatusLoop.hpp"
 
 #include <algorithm>
 #include <cmath>

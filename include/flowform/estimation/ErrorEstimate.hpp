@@ -1,0 +1,42 @@
+// What an error estimate of a run's responses found (TwoLevelEstimate.hpp says how it is made).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "flowform/core/Types.hpp"
+
+namespace flowform {
+
+struct ErrorEstimate {
+  bool estimated = false;
+  /// Why there is no estimate although one was asked for (the refined solve did not converge).
+  std::string failure;
+  double order = 1.0;  ///< p
+  /// η_φ ≈ φ(u) − φ(u_h), by response name.
+  std::map<std::string, double> functionals;
+  /// η of dφ/dh: response → parameter → value (when the case asks for sensitivities).
+  std::map<std::string, std::map<std::string, double>> sensitivities;
+  /// η of the total dφ/dh through the moving free surfaces (ShapeDerivative), when computed.
+  std::map<std::string, std::map<std::string, double>> sensitivitiesTotalShape;
+  /// φ_f and dφ_f/dh (frozen shape and total) on the refined mesh.
+  std::map<std::string, double> refinedFunctionals;
+  std::map<std::string, std::map<std::string, double>> refinedSensitivities;
+  std::map<std::string, std::map<std::string, double>> refinedSensitivitiesTotalShape;
+  /// Free-surface updates the refined solve took from the carried shape (−1: no free surfaces).
+  int refinedSurfaceUpdates = -1;
+  /// Per node of the coarse mesh and per indicator response: |share of η| (replicated).
+  std::map<std::string, std::vector<double>> indicators;
+  GO refinedDofs = 0;
+  double seconds = 0.0;
+
+  /// "functionals_error_estimate", "sensitivities_error_estimate",
+  /// "sensitivities_total_shape_error_estimate" and "error_estimation"
+  /// (method, order, refined dofs and responses, seconds) into the summary.
+  void report(nlohmann::json& summary) const;
+};
+
+}  // namespace flowform

@@ -1,0 +1,161 @@
+// The state of one solve of a case, and the solve itself: the mesh (and the mesh as the mesher
+// made it), the dof map, the boundary conditions, the contact walls with their statuses, the free
+// surfaces, the responses, the assembler and the model (f, W) on them, the solution, and what the
+// solve reported. The algorithms that work on a solved state take a Problem (or the narrower
+// pieces they need): the sensitivities, the total shape derivative and the finite-difference
+// runs (sensitivity/), the two-level estimate and the adaptive loop (estimation/, through
+// CaseRun). The driver (drivers/Simulation) makes one per run and only orchestrates.
+//
+// The solve (Problem::solve, docs/contact.md): Newton with continuation from the zero state
+// (or from a state carried from another mesh, startFrom), restarted from walls that stick at
+// rest and then from frictionless walls when it fails; the contact-status loop
+// (solvers/ContactStatusLoop) once converged; with free surfaces the free-surface loop
+// (freesurface/FreeSurfaceLoop) and, when groups are held until the surfaces converged, their
+// release and the loop again.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "flowform/assembly/Assembler.hpp"
+#include "flowform/assembly/Responses.hpp"
+#include "flowform/bc/BoundaryConditions.hpp"
+#include "flowform/contact/ContactWall.hpp"
+#include "flowform/discretization/DofMap.hpp"
+#include "flowform/freesurface/FreeSurface.hpp"
+#include "flowform/freesurface/FreeSurfaceLoop.hpp"
+#include "flowform/freesurface/UpdateLinearization.hpp"
+#include "flowform/mesh/Mesh.hpp"
+#include "flowform/mesh/SizeField.hpp"
+#include "flowform/physics/FlowPhysics.hpp"
+#include "flowform/solvers/ContactStatusLoop.hpp"
+#include "flowform/solvers/FlowModel.hpp"
+#include "flowform/solvers/NonlinearSolver.hpp"
+
+namespace flowform {
+
+class Problem {
+ public:
+  /// Reads the mesh of the validated case `caseParams` (relative paths against `baseDir`) and
+  /// builds the walls, responses, maps, conditions, free surfaces and the model at `physics`
+  /// (the case's bulk physics). `sizeField`: mesh the case's .geo with these sizes instead of its
+  /// own (the adaptive loop). InputError for what the case's lists cannot make.
+  Problem(const Teuchos::ParameterList& caseParams, const FlowPhysics& physics, const std::string& baseDir,
+          const Teuchos::RCP<const Comm>& comm, const SizeField* sizeField = nullptr);
+  ~Problem();
+  Problem(const Problem&) = delete;
+  Problem& operator=(const Problem&) = delete;
+
+  /// Solves the flow (the first solve with its restarts, the contact-status loop, the
+  /// free-surface loop and the release of held groups). The report says whether it converged.
+  const SolveReport& solve();
+
+  /// Starts from `other`'s state (another mesh of the same case): its solution interpolated at
+  /// this mesh's nodes, its walls' statuses carried to this mesh's wall nodes
+  /// (ContactWall::takeStatusesFrom; with `decideZoneLimits` a node inside an old zone limit is
+  /// active if it penetrates at the interpolated state), the penalty scales from that state.
+  /// solve() then re-solves from there, without the continuation (it falls back to it only if
+  /// Newton fails).
+  void startFrom(const Problem& other, bool decideZoneLimits = true);
+
+  /// Moves the mesh nodes to `coords` (same topology; every cell must stay positively
+  /// oriented, else InputError naming the cell) and refreshes what caches geometry: the
+  /// walls' curves and corners, the symmetry directions; the factors are dropped. The
+  /// solution is kept as the next solve's start.
+  void moveNodes(const std::vector<std::array<double, 2>>& coords);
+
+  /// A Newton solver on the case's Solver sublist; `refreshScales` makes the walls take their
+  /// penalty scales from the state before every Newton solve.
+  NonlinearSolver newtonSolver(bool refreshScales);
+
+  /// The free-surface loop from the converged flow x at `physics` (x, the walls and the mesh move);
+  /// the re-solves use `solver`. `unsettledAtStart`: contact nodes the solve before it left cycling
+  /// (SolveReport::unsettledContacts); `toleranceScale` < 1 tightens the loop (FreeSurfaceLoop::run).
+  FreeSurfaceReport convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
+                                         std::pair<int, double> unsettledAtStart, double toleranceScale = 1.0);
+
+  /// The responses at x on the current mesh and walls.
+  std::map<std::string, double> evaluateResponses(const Vector& x) const {
+    return m_responses->evaluate(x, m_mesh, *m_dofMap, *m_assembler, m_walls);
+  }
+
+  /// What the linearized free-surface update reads and moves: this problem's state.
+  SurfaceLinearizationState linearizationState();
+
+  /// What to try when the first solve of a case with contact walls failed from every start.
+  std::string firstSolveHints() const;
+
+  /// The validated case this problem was made from.
+  const Teuchos::ParameterList& parameters() const { return m_params; }
+  const std::string& baseDirectory() const { return m_baseDir; }
+  const Teuchos::RCP<const Comm>& comm() const { return m_comm; }
+  /// The size field this mesh was made with (empty: the .geo's own sizes).
+  const SizeField& sizeField() const { return m_sizeField; }
+  const Mesh& mesh() const { return m_mesh; }
+  /// The mesh with its nodes where the mesher put them (before any free-surface update moved
+  /// them): the geometry of the case's .geo, which a size field for remeshing must cover.
+  Mesh meshAsMade() const {
+    Mesh made = m_mesh;
+    made.coords = m_madeCoords;
+    return made;
+  }
+  const DofMap& dofMap() const { return *m_dofMap; }
+  const BoundaryConditions& boundaryConditions() const { return *m_bcs; }
+  /// The case's bulk physics (the model is put back to it after a perturbed solve).
+  const FlowPhysics& physics() const { return m_physics; }
+  const Vector& solution() const { return *m_solution; }
+  const Teuchos::RCP<Vector>& solutionPtr() const { return m_solution; }
+  FlowModel& model() { return *m_model; }
+  const FlowModel& model() const { return *m_model; }
+  const Assembler& assembler() const { return *m_assembler; }
+  const Responses& responses() const { return *m_responses; }
+  std::vector<ContactWall>& contactWalls() { return m_walls; }
+  const std::vector<ContactWall>& contactWalls() const { return m_walls; }
+  const ContactStatusLoop& statusLoop() const { return *m_statusLoop; }
+  const FreeSurfaces& freeSurfaces() const { return *m_freeSurfaces; }
+  /// The solve's report, its contact-status changes and its free-surface loop.
+  const SolveReport& report() const { return m_report; }
+  int contactChanges() const { return m_contactChanges; }
+  const FreeSurfaceReport& freeSurfaceReport() const { return m_freeSurfaceReport; }
+
+ private:
+  /// Penalty scales of every wall from the state x.
+  void updateWallScales(const Vector& x);
+  /// The groups marked Release After Free Surfaces are released (BoundaryConditions::releaseHeld):
+  /// the flow is re-solved and the free-surface loop goes on from the converged shape; its report
+  /// continues the held loop's (FreeSurfaceReport::continueFrom).
+  void releaseHeldAndGoOn(NonlinearSolver& solver);
+  /// The free-surface loop on the problem's own state (convergeFreeSurfaces): its report is
+  /// m_freeSurfaceReport, its Newton iterations and changes add to the solve's, and a failure makes
+  /// the solve unconverged, `context` prefixed to its message.
+  void loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart, const std::string& context);
+
+  static constexpr int kFirstTryHalvings = 3;  ///< continuation halvings of the first start with walls
+  Teuchos::ParameterList m_params;
+  Teuchos::RCP<const Comm> m_comm;
+  std::string m_baseDir;
+  SizeField m_sizeField;
+  Mesh m_mesh;
+  std::vector<std::array<double, 2>> m_madeCoords;  ///< the nodes as the mesher made them
+  FlowPhysics m_physics;
+  std::vector<ContactWall> m_walls;
+  std::unique_ptr<Responses> m_responses;
+  std::unique_ptr<DofMap> m_dofMap;
+  std::unique_ptr<BoundaryConditions> m_bcs;
+  std::unique_ptr<Assembler> m_assembler;
+  std::unique_ptr<FlowModel> m_model;
+  std::unique_ptr<ContactStatusLoop> m_statusLoop;
+  std::unique_ptr<FreeSurfaces> m_freeSurfaces;
+  Teuchos::RCP<Vector> m_solution;
+  bool m_warmStart = false;  ///< startFrom() gave the state: solve() re-solves from it
+  SolveReport m_report;
+  int m_contactChanges = 0;
+  FreeSurfaceReport m_freeSurfaceReport;
+};
+
+}  // namespace flowform

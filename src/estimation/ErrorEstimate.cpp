@@ -1,0 +1,26 @@
+#include "flowform/estimation/ErrorEstimate.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace flowform {
+
+void ErrorEstimate::report(nlohmann::json& summary) const {
+  if (!failure.empty()) summary["error_estimation"] = {{"method", "Two-Level"}, {"failure", failure}};
+  if (!estimated) return;
+  summary["functionals_error_estimate"] = nlohmann::json::object();
+  for (const auto& [name, eta] : functionals) summary["functionals_error_estimate"][name] = eta;
+  if (!sensitivities.empty()) summary["sensitivities_error_estimate"] = sensitivities;
+  summary["error_estimation"] = {{"method", "Two-Level"},
+                                 {"order", order},
+                                 {"refined_dofs", refinedDofs},
+                                 {"refined_functionals", refinedFunctionals},
+                                 {"seconds", seconds}};
+  if (!refinedSensitivities.empty()) summary["error_estimation"]["refined_sensitivities"] = refinedSensitivities;
+  if (!sensitivitiesTotalShape.empty()) {
+    summary["sensitivities_total_shape_error_estimate"] = sensitivitiesTotalShape;
+    summary["error_estimation"]["refined_sensitivities_total_shape"] = refinedSensitivitiesTotalShape;
+  }
+  if (refinedSurfaceUpdates >= 0) summary["error_estimation"]["refined_free_surface_iterations"] = refinedSurfaceUpdates;
+}
+
+}  // namespace flowform

@@ -1,0 +1,120 @@
+#include "flowform/problem/Problem.hpp"
+
+#include "flowform/contact/ToolCorners.hpp"
+#include "flowform/contact/WallStates.hpp"
+#include "flowform/core/InputError.hpp"
+#include "flowform/discretization/SolutionTransfer.hpp"
+#include "flowform/mesh/MeshReader.hpp"
+#include "flowform/solvers/LinearSolverRegistry.hpp"
+
+namespace flowform {
+
+using Teuchos::ParameterList;
+
+Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, const std::string& baseDir,
+                 const Teuchos::RCP<const Comm>& comm, const SizeField* sizeField)
+    : m_params(caseParams), m_comm(comm), m_baseDir(baseDir), m_physics(physics) {
+  if (sizeField) m_sizeField = *sizeField;
+
+  m_mesh = readMesh(m_params.sublist("Mesh"), baseDir, *comm, sizeField);
+  m_madeCoords = m_mesh.coords;
+  if (m_physics.kernel.geometry == Geometry::Axisymmetric)
+    for (const auto& xy : m_mesh.coords)
+      if (xy[0] < -1e-12)
+        throw InputError("Problem/Geometry is Axisymmetric but mesh '" + m_mesh.source +
+                         "' has nodes at x = r < 0; the axis is x = 0 and the section must lie in x >= 0");
+
+  // Contact walls first: the friction law couples wall neighbours, which the DofMap must know.
+  const ParameterList& bcList = m_params.sublist("Boundary Conditions");
+  m_walls = contactWallsFromCase(bcList, m_mesh, m_physics.kernel.geometry);
+  std::vector<std::array<GO, 2>> couplings;
+  for (const ContactWall& wall : m_walls) {
+    const auto pairs = wall.couplings();
+    couplings.insert(couplings.end(), pairs.begin(), pairs.end());
+  }
+  m_responses = std::make_unique<Responses>(m_params.sublist("Responses"), m_mesh);
+  m_responses->checkWalls(m_walls);
+
+  m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings);
+  m_bcs = std::make_unique<BoundaryConditions>(bcList, m_mesh, *m_dofMap);
+  m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
+  m_assembler->setPhysics(m_physics);
+  if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
+  m_model = std::make_unique<FlowModel>(
+      *m_assembler, createLinearSolver(m_params.sublist("Solver").sublist("Linear Solver"), *comm));
+  m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
+  // A wall whose released nodes are a free surface: its separation point may cycle until the
+  // surface has settled; a node that still cycles then decides by itself (ContactWall), and the
+  // free-surface loop does not converge while any other cycles.
+  for (const ContactWall& wall : m_walls) if (wall.releasedFreeSurface()) m_statusLoop->tolerateCycling(true);
+  m_freeSurfaces = std::make_unique<FreeSurfaces>(bcList, m_mesh, m_walls);
+  if (m_freeSurfaces->empty() && !m_bcs->heldGroups().empty())
+    throw InputError("Boundary Conditions/" + m_bcs->heldGroups().front() +
+                     ": 'Release After Free Surfaces' needs free surfaces, and the case has none");
+  m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
+  m_bcs->imposeOnSolution(*m_solution);
+}
+
+Problem::~Problem() = default;
+
+NonlinearSolver Problem::newtonSolver(bool refreshScales) {
+  NonlinearSolver solver(*m_model, m_params.sublist("Solver"));
+  if (refreshScales && !m_walls.empty()) solver.setBeforeNewton([this](const Vector& x) { updateWallScales(x); });
+  return solver;
+}
+
+void Problem::startFrom(const Problem& other, bool decideZoneLimits) {
+  // The other mesh's free surfaces moved: this mesh, as made, takes their shape first (carryShape),
+  // and the groups it released after its first loop are released here from the start.
+  if (other.m_mesh.coords != other.m_madeCoords)
+    moveNodes(carryShape(other.meshAsMade(), other.mesh(), meshAsMade()));
+  if (!other.m_bcs->releasedGroups().empty()) m_bcs->releaseHeld(m_mesh);
+  interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap,
+              *m_solution);
+  m_bcs->imposeOnSolution(*m_solution);
+  // Statuses carried over; a node inside an old zone limit is decided by whether it penetrates.
+  const double penetrationTolerance = m_params.sublist("Contact").get<double>("Penetration Tolerance");
+  std::vector<double> p;
+  std::vector<std::array<double, 2>> u;
+  for (ContactWall& wall : m_walls)
+    for (const ContactWall& from : other.contactWalls())
+      if (from.name() == wall.name()) {
+        if (decideZoneLimits) wallValues(wall, *m_dofMap, *m_solution, p, u);  // collective
+        wall.takeStatusesFrom(from, decideZoneLimits ? &u : nullptr, penetrationTolerance);
+      }
+  if (!m_walls.empty()) updateWallScales(*m_solution);
+  m_warmStart = true;
+}
+
+void Problem::moveNodes(const std::vector<std::array<double, 2>>& coords) {
+  m_mesh.setCoordinates(coords);
+  for (ContactWall& wall : m_walls) wall.refreshGeometry(m_mesh);
+  markConvexToolCorners(m_walls);
+  m_bcs->refreshGeometry(m_mesh);
+  m_bcs->imposeOnSolution(*m_solution);  // symmetry directions may have turned
+  m_model->invalidateJacobian();
+}
+
+SurfaceLinearizationState Problem::linearizationState() {
+  return {m_mesh,  *m_dofMap, m_physics.kernel.geometry, *m_freeSurfaces, m_walls, *m_model, *m_responses,
+          *m_solution, [this](const std::vector<std::array<double, 2>>& coords) { moveNodes(coords); }};
+}
+
+void Problem::updateWallScales(const Vector& x) {
+  std::vector<double> mu, sigma;
+  m_assembler->nodalCellMaxima(x, mu, sigma);
+  for (ContactWall& wall : m_walls) {
+    std::vector<double> wallMu(wall.numNodes(), 0.0), wallSigma(wall.numNodes(), 0.0);
+    for (int k = 0; k < wall.numNodes(); ++k) {
+      const LO n = m_dofMap->overlapIndex(wall.curve().nodes[k]);
+      if (n < 0) continue;  // neither this rank's node nor a neighbour of one: not used here
+      const double fixed = wall.settings().penaltyViscosity;
+      wallMu[k] = fixed > 0.0 ? fixed : mu[n];
+      wallSigma[k] = sigma[n];
+    }
+    wall.setScales(std::move(wallMu), std::move(wallSigma));
+  }
+  m_model->invalidateJacobian();
+}
+
+}  // namespace flowform

@@ -1,0 +1,143 @@
+// Problem::solve and the free-surface loop's wiring (Problem.hpp).
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "flowform/core/Budget.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/discretization/SolutionTransfer.hpp"
+#include "flowform/problem/Problem.hpp"
+
+namespace flowform {
+
+const SolveReport& Problem::solve() {
+  log() << "flowform: " << m_mesh.numNodes() << " nodes, " << m_mesh.numCells() << " "
+        << cellTypeName(m_mesh.cellType) << " cells, " << m_dofMap->ownedMap()->getGlobalNumElements()
+        << " dofs, " << m_comm->getSize() << " rank(s)\n";
+  NonlinearSolver solver = newtonSolver(true);
+  if (!m_walls.empty()) updateWallScales(*m_solution);
+  // The zero start puts every wall node at the kink of its friction law, and the predictor then
+  // sees frictionless walls. Where friction dominates (ν ≳ 1) that start can fail, so with walls
+  // it is tried with at most kFirstTryHalvings continuation halvings, then from walls that stick
+  // at rest (FrictionSettings::stickAtRest), then from frictionless walls with every halving the
+  // case allows (docs/contact.md).
+  const Vector initial(*m_solution, Teuchos::Copy);
+  const double caseMinimum = m_params.sublist("Solver").sublist("Continuation").get<double>("Minimum Step");
+  const double firstMinimum = m_walls.empty() ? 0.0 : std::max(caseMinimum, std::ldexp(1.0, -kFirstTryHalvings));
+  // From another mesh's converged state (startFrom): Newton at the target from there; resolve()
+  // falls back to the predictor and the continuation itself if that fails.
+  m_report = m_warmStart ? solver.resolve(*m_solution, m_physics) : solver.solve(*m_solution, m_physics, firstMinimum);
+  auto again = [&](bool stick, const char* how) {
+    log() << "flowform: the first solve failed (" << m_report.message << "); solving again " << how << "\n";
+    Tpetra::deep_copy(*m_solution, initial);
+    for (ContactWall& wall : m_walls) wall.setStickAtRest(stick);
+    updateWallScales(*m_solution);
+    SolveReport next = solver.solve(*m_solution, m_physics);
+    for (ContactWall& wall : m_walls) wall.setStickAtRest(false);
+    next.newtonIterations += m_report.newtonIterations;
+    next.restarts = m_report.restarts + 1;
+    m_report = next;
+  };
+  if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) again(true, "from walls that stick at rest");
+  if (!m_report.converged && !m_walls.empty() && firstMinimum > caseMinimum && !budgetWasSpent())
+    again(false, "from frictionless walls with every continuation halving");
+  m_report.newtonPerSolve = {m_report.newtonIterations};
+  if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) m_report.message += firstSolveHints();
+  if (m_report.converged && !m_walls.empty())
+    m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
+  if (m_report.converged && !m_freeSurfaces->empty()) {
+    loopFreeSurfaces(solver, {m_report.unsettledContacts, m_report.unsettledContactRatio}, "");
+    if (m_report.converged && m_bcs->releaseHeld(m_mesh)) releaseHeldAndGoOn(solver);
+  }
+  return m_report;
+}
+
+std::string Problem::firstSolveHints() const {
+  // Measured on xml/extrusion.xml at ν = 2 on every wall (docs/theory.md §5, "Not-converged messages"): Tresca with m = 1 and
+  // h = 0.05 converged; a smaller Minimum Step, 150 Newton iterations, the Exact linearization did not.
+  double nu = 0.0;
+  std::string coulomb;
+  for (const ContactWall& wall : m_walls)
+    if (wall.usesFrictionCoefficient() && wall.settings().frictionCoefficient > nu) {
+      nu = wall.settings().frictionCoefficient;
+      coulomb = wall.name();
+    }
+  std::string hints = ". The first solve failed from each start (zero, walls sticking at rest, frictionless walls). To try: ";
+  if (!coulomb.empty())
+    hints += "a smaller Friction Coefficient (" + (std::ostringstream() << std::setprecision(3) << nu).str() +
+             " on wall '" + coulomb +
+             "'), or Friction Law = Tresca with a Shear Factor <= 1 (the friction stress bounded by the flow stress); ";
+  return hints + "a finer mesh (Mesh/Geo Parameters, Mesh/Uniform Refinements). A smaller "
+                 "Solver/Continuation/Minimum Step, more Solver/Max Newton Iterations or Newton Linearization = "
+                 "Exact may not help (they did not at friction coefficient 2 on the extrusion)";
+}
+
+FreeSurfaceReport Problem::convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
+                                                std::pair<int, double> unsettledAtStart, double toleranceScale) {
+  FreeSurfaceLoop::Hooks hooks;
+  std::pair<int, double> unsettled = unsettledAtStart;  // contact nodes the last solve left cycling
+  hooks.velocities = [&] { return replicate(x, *m_dofMap); };
+  hooks.moveNodes = [&](const std::vector<std::array<double, 2>>& coords) {
+    moveNodes(coords);
+    m_bcs->imposeOnSolution(x);
+  };
+  hooks.release = [&](int w, int k) {
+    m_walls[w].setActive(k, false);
+    log() << "contact: " << m_walls[w].name() << " node " << m_walls[w].curve().nodes[k]
+          << " released: the separated surface passes below it\n";
+  };
+  hooks.newtonMoves = [&](const FreeSurfaceStep&, std::vector<std::array<double, 2>>& moves, std::string& why) {
+    // The linearization reads the problem's own state: a perturbed run's (x ≠ m_solution) has none.
+    if (&x != m_solution.get()) {
+      why = "not in a finite-difference run";
+      return false;
+    }
+    const UpdateLinearization lin(linearizationState(), false);
+    why = lin.failure();
+    return why.empty() && lin.newtonMoves(moves);
+  };
+  hooks.resolve = [&](int& newton, int& changes, std::string& why) {
+    // Each shape is a new contact problem: the per-node change counts start again (the loop's
+    // own cap stops a shape and a status that chase each other).
+    for (ContactWall& wall : m_walls) wall.resetChangeCounts();
+    SolveReport r = solver.resolve(x, physics);
+    if (r.converged && !m_walls.empty()) changes = m_statusLoop->run(solver, x, physics, m_walls, r);
+    newton = r.newtonIterations;
+    why = r.message;
+    unsettled = {r.unsettledContacts, r.unsettledContactRatio};
+    return r.converged;
+  };
+  hooks.unsettledContacts = [&] { return unsettled; };
+  return FreeSurfaceLoop(*m_freeSurfaces, m_params.sublist("Free Surface"))
+      .run(m_mesh, *m_dofMap, m_walls, physics.kernel.geometry, hooks, toleranceScale);
+}
+
+void Problem::releaseHeldAndGoOn(NonlinearSolver& solver) {
+  log() << "flowform: the groups held until the free surfaces converged are released; the loop goes on\n";
+  m_model->invalidateJacobian();
+  for (ContactWall& wall : m_walls) wall.resetChangeCounts();
+  SolveReport r = solver.resolve(*m_solution, m_physics);
+  if (r.converged && !m_walls.empty()) m_contactChanges += m_statusLoop->run(solver, *m_solution, m_physics, m_walls, r);
+  m_report.newtonIterations += r.newtonIterations;
+  if (!r.converged) {
+    m_report.converged = false;
+    m_report.message = "the flow with the held groups released did not converge: " + r.message;
+    return;
+  }
+  const FreeSurfaceReport held = m_freeSurfaceReport;  // the loop with the groups held
+  loopFreeSurfaces(solver, {r.unsettledContacts, r.unsettledContactRatio}, "after the held groups were released: ");
+  m_freeSurfaceReport.continueFrom(held);
+}
+
+void Problem::loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart,
+                               const std::string& context) {
+  m_freeSurfaceReport = convergeFreeSurfaces(solver, *m_solution, m_physics, unsettledAtStart);
+  m_report.newtonIterations += m_freeSurfaceReport.newtonIterations;
+  m_contactChanges += m_freeSurfaceReport.contactChanges;
+  if (!m_freeSurfaceReport.converged) {
+    m_report.converged = false;
+    m_report.message = context + m_freeSurfaceReport.message;
+  }
+}
+
+}  // namespace flowform

@@ -1,0 +1,57 @@
+#include "flowform/sensitivity/PerturbedSolve.hpp"
+
+#include "flowform/contact/WallStates.hpp"
+#include "flowform/freesurface/FreeSurfaceLoop.hpp"
+#include "flowform/problem/Problem.hpp"
+
+namespace flowform {
+
+PerturbedRun solvePerturbed(Problem& problem, const SensitivityParameter& h, double delta, bool holdScales) {
+  std::vector<ContactWall>& walls = problem.contactWalls();
+  const DofMap& dofMap = problem.dofMap();
+  std::vector<ContactWall::State> saved;
+  for (const ContactWall& wall : walls) saved.push_back(wall.state());
+  FlowPhysics physics = problem.physics();
+  shiftParameter(h, delta, physics, walls);
+  for (ContactWall& wall : walls) wall.resetChangeCounts();
+  // Held scales (the default) keep the walls' μ_k and σ̄_k of the base run, the problem the
+  // DDM differentiates; Recomputed takes them from the start state at h ± δ, as a solve does.
+  NonlinearSolver solver = problem.newtonSolver(!holdScales);
+  auto x = Teuchos::rcp(new Vector(problem.solution(), Teuchos::Copy));
+  PerturbedRun run;
+  SolveReport report = solver.resolve(*x, physics);
+  if (report.converged && !walls.empty()) run.contactChanges = problem.statusLoop().run(solver, *x, physics, walls, report);
+  // Nodes left cycling (a wall whose released nodes are free surfaces) are accepted when they only
+  // graze the tool, as in the free-surface loop.
+  const bool cycling = !FreeSurfaceLoop::settled({report.unsettledContacts, report.unsettledContactRatio});
+  run.converged = report.converged && !cycling;
+  run.message = cycling ? std::to_string(report.unsettledContacts) + " contact node(s) cycle on the frozen shape"
+                        : report.message;
+  run.newtonIterations = report.newtonIterations;
+  run.x = x;
+  if (run.converged) {
+    run.functionals = problem.evaluateResponses(*x);
+    run.states = wallStates(walls, dofMap, *x);
+  }
+  if (run.converged && !problem.freeSurfaces().empty()) {
+    // The same perturbation with the surfaces re-converged: the total derivative's difference.
+    const std::vector<std::array<double, 2>> shape = problem.mesh().coords;
+    Vector moving(*x, Teuchos::Copy);
+    const FreeSurfaceReport surfaces =
+        problem.convergeFreeSurfaces(solver, moving, physics, {report.unsettledContacts, report.unsettledContactRatio},
+                                     kFiniteDifferenceSurfaceTolerance);
+    run.newtonIterations += surfaces.newtonIterations;
+    if (surfaces.converged) {
+      run.movingFunctionals = problem.evaluateResponses(moving);
+    } else {
+      run.converged = false;
+      run.message = "with re-converged free surfaces: " + surfaces.message;
+    }
+    problem.moveNodes(shape);
+  }
+  for (size_t w = 0; w < walls.size(); ++w) walls[w].restore(saved[w]);
+  problem.model().setPhysics(problem.physics());
+  return run;
+}
+
+}  // namespace flowform
