@@ -1,12 +1,11 @@
-#!/usr/bin/python3
 """The cutting scene (xml/cutting.xml, docs/cutting.md) over the friction coefficient: per ν the
 chip ratio t/t_c, the shear angle, the tool's forces, the contact length, the balances, the
 specific cutting force against Merchant's, the shear plane's equilibrium at the run's own φ
-(the band's angle and mean stress, python/flowform_tools/shear_plane.py), and the derivatives d/dν by DDM (frozen shape and
+(the band's angle and mean stress, tests/regression/cutting/shear_plane.py), and the derivatives d/dν by DDM (frozen shape and
 total, through the converged free surfaces) against central finite differences (frozen shape and
 with the surfaces re-converged); the cost of each run.
 
-usage: bench/cutting_sweep.py [FLOWFORM] [--nu 0,0.1,0.2,0.3,0.5] [--h 0.1] [--workdir DIR]
+usage: scripts/python bench/cutting_sweep.py [FLOWFORM] [--nu 0,0.1,0.2,0.3,0.5] [--h 0.1] [--workdir DIR]
                               [--sets PATH=VALUE ...] [--plot DIR] [--reuse]
 
 The runs skip the case's two-level error estimate (--sets "Error Estimation/Method=Two-Level"
@@ -26,9 +25,9 @@ import time
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import h5io, launcher, machine, plotting, shear_plane, summary, sweep  # noqa: E402
-from flowform_tools.tables import markdown  # noqa: E402
+from cutting import shear_plane
+from flowform_tools import h5io, launcher, machine, plotting, summary, sweep
+from flowform_tools.tables import markdown
 
 
 def lee_shaffer(nu):
@@ -128,7 +127,7 @@ def table(rows):
     print(markdown(["ν", "d(t/t_c)/dν total DDM", "FD re-converged", "Merchant", "Lee-Shaffer", "dF_c/dν frozen DDM",
                     "frozen FD", "total DDM", "FD re-converged"], body, "---:"), end="")
     print()
-    print("The shear plane at the model's own φ (python/flowform_tools/shear_plane.py): the band read off the strain "
+    print("The shear plane at the model's own φ (tests/regression/cutting/shear_plane.py): the band read off the strain "
           "rate, its mean stress p over k = σ̄/√3 there against tan(φ + θ), tan θ = F_t / drive force, and the drive "
           "force against the plane's cos θ / (sin φ cos(φ + θ)); Lee-Shaffer's and Merchant's planes would carry "
           "p/k = tan(45°) = 1 and tan(45° + λ/2).")
