@@ -25,22 +25,9 @@ import time
 
 import numpy as np
 
-from cutting import shear_plane
+from cutting import rules, shear_plane
 from flowform_tools import h5io, launcher, machine, plotting, summary, sweep
 from flowform_tools.tables import markdown
-
-
-def lee_shaffer(nu):
-    return (1.0 - nu) / (1.0 + nu)
-
-
-def merchant(nu):
-    return math.sqrt(1.0 + nu * nu) - nu
-
-
-def merchant_force(nu):
-    """F_c / (k t) of Merchant's minimum-energy shear plane at α = 0."""
-    return 2.0 * (math.sqrt(1.0 + nu * nu) + nu)
 
 
 def strain_rate_integral(outdir):
@@ -110,10 +97,10 @@ def table(rows):
             print(f"| {r['nu']} | {r['exit']} | {r['updates']} | {r['seconds']:.0f} |" + " - |" * 14)
             continue
         print(f"| {r['nu']} | 0 | {r['updates']} | {r['seconds']:.0f} | {f['chip_ratio']:.4f} | "
-              f"{lee_shaffer(r['nu']):.4f} | {merchant(r['nu']):.4f} | {f['shear_angle']:.2f} | "
+              f"{rules.lee_shaffer_chip_ratio(r['nu']):.4f} | {rules.merchant_chip_ratio(r['nu']):.4f} | {f['shear_angle']:.2f} | "
               f"{f['cutting_force']:.4f} | {f['thrust_force']:.4f} | {f['thrust_force'] / f['cutting_force']:.4f} | "
               f"{f['contact_length']:.3f} | {f['chip_flux']:.4f} | {r['power_residual']:.1e} | {r['k']:.4f} | "
-              f"{r['specific_force']:.3f} | {r['specific_drive_force']:.3f} | {merchant_force(r['nu']):.3f} |")
+              f"{r['specific_force']:.3f} | {r['specific_drive_force']:.3f} | {rules.merchant_force(r['nu']):.3f} |")
     print()
     body = []
     for r in rows:
@@ -121,8 +108,8 @@ def table(rows):
             continue
         c, F = r["d"]["chip_ratio"], r["d"]["cutting_force"]
         nu = r["nu"]
-        body.append([f"{nu}", fmt(c["ddm_total"]), fmt(c["fd_moving"]), f"{nu / math.sqrt(1 + nu * nu) - 1:.4f}",
-                     f"{-2.0 / (1.0 + nu) ** 2:.4f}", fmt(F["ddm"]), fmt(F["fd"]), fmt(F["ddm_total"]),
+        body.append([f"{nu}", fmt(c["ddm_total"]), fmt(c["fd_moving"]), f"{rules.merchant_chip_ratio_derivative(nu):.4f}",
+                     f"{rules.lee_shaffer_chip_ratio_derivative(nu):.4f}", fmt(F["ddm"]), fmt(F["fd"]), fmt(F["ddm_total"]),
                      fmt(F["fd_moving"])])
     print(markdown(["ν", "d(t/t_c)/dν total DDM", "FD re-converged", "Merchant", "Lee-Shaffer", "dF_c/dν frozen DDM",
                     "frozen FD", "total DDM", "FD re-converged"], body, "---:"), end="")
@@ -137,7 +124,7 @@ def table(rows):
         if r["exit"] != 0:
             continue
         b, nu = r["band"], r["nu"]
-        merchant_plane = math.tan(math.radians(45.0 + math.degrees(math.atan(nu)) / 2.0))
+        merchant_plane = rules.merchant_normal_stress_ratio(nu)
         body.append([f"{nu}", f"{r['functionals']['shear_angle']:.2f}", f"{b['angle']:.2f}", f"{b['theta']:.2f}",
                      f"{b['k']:.4f}", f"{b['p_over_k']:.4f}", f"{b['p_over_k_plane']:.4f}", f"{merchant_plane:.4f}",
                      f"{b['drive_over_kt']:.3f}", f"{b['drive_over_kt_plane']:.3f}"])
@@ -156,7 +143,8 @@ def table(rows):
             continue
         nu = r["nu"]
         dphi, dtheta, plane = shear_plane.run_derivatives(r["functionals"], total)
-        body.append([f"{nu}", f"{dphi:.4f}", f"{-0.5 / (1.0 + nu * nu):.4f}", f"{dtheta:.4f}", f"{1.0 / (1.0 + nu * nu):.4f}",
+        body.append([f"{nu}", f"{dphi:.4f}", f"{rules.merchant_shear_angle_derivative(nu):.4f}", f"{dtheta:.4f}",
+                     f"{rules.friction_angle_derivative(nu):.4f}",
                      f"{total['drive_force']:.4f}", f"{plane:.4f}", f"{100.0 * (plane / total['drive_force'] - 1.0):+.1f} %"])
     print(markdown(["ν", "dφ/dν (rad)", "Merchant's rule", "dθ/dν", "full sliding", "d(drive)/dν total DDM",
                     "the plane's", ""], body, "---:"), end="")
@@ -168,8 +156,8 @@ def plot(rows, outdir):
     nus = np.linspace(0.0, max(r["nu"] for r in rows) + 0.05, 100)
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     ax = axes[0]
-    ax.plot(nus, [lee_shaffer(n) for n in nus], "k--", label="Lee-Shaffer (1-ν)/(1+ν)")
-    ax.plot(nus, [merchant(n) for n in nus], "k:", label="Merchant √(1+ν²)-ν")
+    ax.plot(nus, [rules.lee_shaffer_chip_ratio(n) for n in nus], "k--", label="Lee-Shaffer (1-ν)/(1+ν)")
+    ax.plot(nus, [rules.merchant_chip_ratio(n) for n in nus], "k:", label="Merchant √(1+ν²)-ν")
     ax.plot([r["nu"] for r in ok], [r["functionals"]["chip_ratio"] for r in ok], "o-", label="flowform")
     for r in ok:
         d = r["d"]["chip_ratio"]
@@ -183,7 +171,7 @@ def plot(rows, outdir):
     ax.set_title("chip ratio (red: DDM total derivative, x: FD re-converged)")
     ax.legend(fontsize=8)
     ax = axes[1]
-    ax.plot(nus, [merchant_force(n) for n in nus], "k:", label="Merchant 2(√(1+ν²)+ν)")
+    ax.plot(nus, [rules.merchant_force(n) for n in nus], "k:", label="Merchant 2(√(1+ν²)+ν)")
     ax.plot([r["nu"] for r in ok], [r["specific_force"] for r in ok], "o-", label="F_c/(k t) at the rake")
     ax.plot([r["nu"] for r in ok], [r["specific_drive_force"] for r in ok], "s-", label="drive force/(k t)")
     for r in ok:

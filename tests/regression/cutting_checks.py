@@ -82,7 +82,7 @@ import math
 import os
 import sys
 
-from cutting import shear_plane
+from cutting import rules, shear_plane
 from flowform_tools import case as cases, checks, csvio, launcher, summary
 
 NO_FILES = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
@@ -141,7 +141,7 @@ def shear_plane_derivative(s, f, nu, label):
     dphi, dtheta, plane = shear_plane.run_derivatives(f, d)
     return checks.check(abs(plane - d["drive_force"]) <= 0.1 * abs(d["drive_force"]),
                         f"{label}: d(drive force)/dν total DDM {d['drive_force']:.4f}, the plane's {plane:.4f} "
-                        f"(dφ/dν = {dphi:.4f} rad, Merchant's {-0.5 / (1 + nu * nu):.4f}; dθ/dν = {dtheta:.4f})")
+                        f"(dφ/dν = {dphi:.4f} rad, Merchant's {rules.merchant_shear_angle_derivative(nu):.4f}; dθ/dν = {dtheta:.4f})")
 
 
 def lee_shaffer_geometry(flowform, case, work):
