@@ -1,9 +1,8 @@
-#!/usr/bin/python3
 """Work against error of the extrusion's ram force (docs/theory.md §7): meshes of the .geo's
 own grading (hc = h/4, the default's; and the strongly corner-graded hc = h/25) against the
 adaptive loop at several targets, every run with its error estimate.
 
-usage: bench/adaptivity_bench.py [FLOWFORM] [--case xml/extrusion.xml] [--reference 3.7347]
+usage: scripts/python bench/adaptivity_bench.py [FLOWFORM] [--case xml/extrusion.xml] [--reference 3.7347]
                                  [--uniform H:HC,...] [--targets 0.02,0.005,...] [--nu NU]
                                  [--dfdnu-reference D] [--workdir /tmp/flowform_adapt_bench]
 
@@ -15,11 +14,9 @@ estimate pays.
 """
 import argparse
 import os
-import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import launcher, summary  # noqa: E402
+from flowform_tools import launcher, summary
 
 
 def main():

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Scaling benchmark of flowform on the channel scene (xml/channel.xml).
 
 Runs the flowform binary over a range of mesh sizes (Mesh/Geo Parameters/N: N cells across
@@ -9,7 +8,7 @@ material: Newton iterations, assembly, factorization and solve times from summar
 peak resident memory and bytes per dof (gross, and net of a tiny N = 2 run's peak).
 
 usage:
-  bench/channel_bench.py [FLOWFORM] [--quick] [--sizes N,N,...] [--elements tri,quad]
+  scripts/python bench/channel_bench.py [FLOWFORM] [--quick] [--sizes N,N,...] [--elements tri,quad]
                          [--materials nonlinear,newtonian] [--max-run-seconds S]
                          [--json OUT.json] [--mpi NP --mpi-size N]
 
@@ -33,9 +32,8 @@ import shutil
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import REPO, csvio, default_flowform, h5io, machine, summary  # noqa: E402
-from flowform_tools.benchmark import (CHANNEL_MATERIALS as MATERIALS, ELEMENTS, channel_dofs,  # noqa: E402
+from flowform_tools import REPO, csvio, default_flowform, h5io, machine, summary
+from flowform_tools.benchmark import (CHANNEL_MATERIALS as MATERIALS, ELEMENTS, channel_dofs,
                                       channel_size, require_tools, run_case)
 
 DEFAULT_SIZES = [40, 57, 81, 115, 163, 230, 325, 408]

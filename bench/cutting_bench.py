@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The cutting scene's cost against its accuracy (docs/cutting.md §6, docs/BENCHMARKS.md §13):
 the default case (xml/cutting.xml: ν = 0.2, h = 0.1, hc = h/4) and refinements of it; per mesh
 the dofs, the surface updates, the Newton iterations, the run time (median of --repeat), the
@@ -10,7 +9,7 @@ cutting force F_c, the drive force, the chip ratio t/t_c, and their error estima
   meshes' estimates solve on 4x their dofs), the others run with Method = None.
 - "seq.": the distance to the Richardson extrapolation of the meshes' values (below).
 
-usage: bench/cutting_bench.py [FLOWFORM] [--h 0.1,0.07,0.05] [--repeat 1] [--workdir DIR]
+usage: scripts/python bench/cutting_bench.py [FLOWFORM] [--h 0.1,0.07,0.05] [--repeat 1] [--workdir DIR]
                               [--estimate-all] [--sets PATH=VALUE ...]
 
 The sequence estimate of a value on mesh i is its distance to the Richardson extrapolation of the
@@ -25,8 +24,7 @@ import statistics
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import launcher, machine, summary, sweep  # noqa: E402
+from flowform_tools import launcher, machine, summary, sweep
 
 NO_FILES = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
 VALUES = ("cutting_force", "drive_force", "chip_ratio")

@@ -1,12 +1,11 @@
-#!/usr/bin/python3
 """The cutting scene (xml/cutting.xml, docs/cutting.md) over the friction coefficient: per ν the
 chip ratio t/t_c, the shear angle, the tool's forces, the contact length, the balances, the
 specific cutting force against Merchant's, the shear plane's equilibrium at the run's own φ
-(the band's angle and mean stress, python/flowform_tools/shear_plane.py), and the derivatives d/dν by DDM (frozen shape and
+(the band's angle and mean stress, tests/regression/cutting/shear_plane.py), and the derivatives d/dν by DDM (frozen shape and
 total, through the converged free surfaces) against central finite differences (frozen shape and
 with the surfaces re-converged); the cost of each run.
 
-usage: bench/cutting_sweep.py [FLOWFORM] [--nu 0,0.1,0.2,0.3,0.5] [--h 0.1] [--workdir DIR]
+usage: scripts/python bench/cutting_sweep.py [FLOWFORM] [--nu 0,0.1,0.2,0.3,0.5] [--h 0.1] [--workdir DIR]
                               [--sets PATH=VALUE ...] [--plot DIR] [--reuse]
 
 The runs skip the case's two-level error estimate (--sets "Error Estimation/Method=Two-Level"
@@ -26,22 +25,9 @@ import time
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import h5io, launcher, machine, plotting, shear_plane, summary, sweep  # noqa: E402
-from flowform_tools.tables import markdown  # noqa: E402
-
-
-def lee_shaffer(nu):
-    return (1.0 - nu) / (1.0 + nu)
-
-
-def merchant(nu):
-    return math.sqrt(1.0 + nu * nu) - nu
-
-
-def merchant_force(nu):
-    """F_c / (k t) of Merchant's minimum-energy shear plane at α = 0."""
-    return 2.0 * (math.sqrt(1.0 + nu * nu) + nu)
+from cutting import rules, shear_plane
+from flowform_tools import h5io, launcher, machine, plotting, summary, sweep
+from flowform_tools.tables import markdown
 
 
 def strain_rate_integral(outdir):
@@ -111,10 +97,10 @@ def table(rows):
             print(f"| {r['nu']} | {r['exit']} | {r['updates']} | {r['seconds']:.0f} |" + " - |" * 14)
             continue
         print(f"| {r['nu']} | 0 | {r['updates']} | {r['seconds']:.0f} | {f['chip_ratio']:.4f} | "
-              f"{lee_shaffer(r['nu']):.4f} | {merchant(r['nu']):.4f} | {f['shear_angle']:.2f} | "
+              f"{rules.lee_shaffer_chip_ratio(r['nu']):.4f} | {rules.merchant_chip_ratio(r['nu']):.4f} | {f['shear_angle']:.2f} | "
               f"{f['cutting_force']:.4f} | {f['thrust_force']:.4f} | {f['thrust_force'] / f['cutting_force']:.4f} | "
               f"{f['contact_length']:.3f} | {f['chip_flux']:.4f} | {r['power_residual']:.1e} | {r['k']:.4f} | "
-              f"{r['specific_force']:.3f} | {r['specific_drive_force']:.3f} | {merchant_force(r['nu']):.3f} |")
+              f"{r['specific_force']:.3f} | {r['specific_drive_force']:.3f} | {rules.merchant_force(r['nu']):.3f} |")
     print()
     body = []
     for r in rows:
@@ -122,13 +108,13 @@ def table(rows):
             continue
         c, F = r["d"]["chip_ratio"], r["d"]["cutting_force"]
         nu = r["nu"]
-        body.append([f"{nu}", fmt(c["ddm_total"]), fmt(c["fd_moving"]), f"{nu / math.sqrt(1 + nu * nu) - 1:.4f}",
-                     f"{-2.0 / (1.0 + nu) ** 2:.4f}", fmt(F["ddm"]), fmt(F["fd"]), fmt(F["ddm_total"]),
+        body.append([f"{nu}", fmt(c["ddm_total"]), fmt(c["fd_moving"]), f"{rules.merchant_chip_ratio_derivative(nu):.4f}",
+                     f"{rules.lee_shaffer_chip_ratio_derivative(nu):.4f}", fmt(F["ddm"]), fmt(F["fd"]), fmt(F["ddm_total"]),
                      fmt(F["fd_moving"])])
     print(markdown(["ν", "d(t/t_c)/dν total DDM", "FD re-converged", "Merchant", "Lee-Shaffer", "dF_c/dν frozen DDM",
                     "frozen FD", "total DDM", "FD re-converged"], body, "---:"), end="")
     print()
-    print("The shear plane at the model's own φ (python/flowform_tools/shear_plane.py): the band read off the strain "
+    print("The shear plane at the model's own φ (tests/regression/cutting/shear_plane.py): the band read off the strain "
           "rate, its mean stress p over k = σ̄/√3 there against tan(φ + θ), tan θ = F_t / drive force, and the drive "
           "force against the plane's cos θ / (sin φ cos(φ + θ)); Lee-Shaffer's and Merchant's planes would carry "
           "p/k = tan(45°) = 1 and tan(45° + λ/2).")
@@ -138,7 +124,7 @@ def table(rows):
         if r["exit"] != 0:
             continue
         b, nu = r["band"], r["nu"]
-        merchant_plane = math.tan(math.radians(45.0 + math.degrees(math.atan(nu)) / 2.0))
+        merchant_plane = rules.merchant_normal_stress_ratio(nu)
         body.append([f"{nu}", f"{r['functionals']['shear_angle']:.2f}", f"{b['angle']:.2f}", f"{b['theta']:.2f}",
                      f"{b['k']:.4f}", f"{b['p_over_k']:.4f}", f"{b['p_over_k_plane']:.4f}", f"{merchant_plane:.4f}",
                      f"{b['drive_over_kt']:.3f}", f"{b['drive_over_kt_plane']:.3f}"])
@@ -157,7 +143,8 @@ def table(rows):
             continue
         nu = r["nu"]
         dphi, dtheta, plane = shear_plane.run_derivatives(r["functionals"], total)
-        body.append([f"{nu}", f"{dphi:.4f}", f"{-0.5 / (1.0 + nu * nu):.4f}", f"{dtheta:.4f}", f"{1.0 / (1.0 + nu * nu):.4f}",
+        body.append([f"{nu}", f"{dphi:.4f}", f"{rules.merchant_shear_angle_derivative(nu):.4f}", f"{dtheta:.4f}",
+                     f"{rules.friction_angle_derivative(nu):.4f}",
                      f"{total['drive_force']:.4f}", f"{plane:.4f}", f"{100.0 * (plane / total['drive_force'] - 1.0):+.1f} %"])
     print(markdown(["ν", "dφ/dν (rad)", "Merchant's rule", "dθ/dν", "full sliding", "d(drive)/dν total DDM",
                     "the plane's", ""], body, "---:"), end="")
@@ -169,8 +156,8 @@ def plot(rows, outdir):
     nus = np.linspace(0.0, max(r["nu"] for r in rows) + 0.05, 100)
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     ax = axes[0]
-    ax.plot(nus, [lee_shaffer(n) for n in nus], "k--", label="Lee-Shaffer (1-ν)/(1+ν)")
-    ax.plot(nus, [merchant(n) for n in nus], "k:", label="Merchant √(1+ν²)-ν")
+    ax.plot(nus, [rules.lee_shaffer_chip_ratio(n) for n in nus], "k--", label="Lee-Shaffer (1-ν)/(1+ν)")
+    ax.plot(nus, [rules.merchant_chip_ratio(n) for n in nus], "k:", label="Merchant √(1+ν²)-ν")
     ax.plot([r["nu"] for r in ok], [r["functionals"]["chip_ratio"] for r in ok], "o-", label="flowform")
     for r in ok:
         d = r["d"]["chip_ratio"]
@@ -184,7 +171,7 @@ def plot(rows, outdir):
     ax.set_title("chip ratio (red: DDM total derivative, x: FD re-converged)")
     ax.legend(fontsize=8)
     ax = axes[1]
-    ax.plot(nus, [merchant_force(n) for n in nus], "k:", label="Merchant 2(√(1+ν²)+ν)")
+    ax.plot(nus, [rules.merchant_force(n) for n in nus], "k:", label="Merchant 2(√(1+ν²)+ν)")
     ax.plot([r["nu"] for r in ok], [r["specific_force"] for r in ok], "o-", label="F_c/(k t) at the rake")
     ax.plot([r["nu"] for r in ok], [r["specific_drive_force"] for r in ok], "s-", label="drive force/(k t)")
     for r in ok:

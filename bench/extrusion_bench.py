@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Cost and work–precision benchmark of flowform on the extrusion scene (issue #3).
 
 Runs the flowform binary on xml/extrusion.xml (plane strain) and xml/extrusion_axisym.xml
@@ -18,10 +17,10 @@ under /usr/bin/time -v with its log kept, and prints per case:
     (≈ 0.97 hc of the throughput in plane strain) crosses the first die-face segment.
 
 usage:
-  bench/extrusion_bench.py [FLOWFORM] [--cases plane,axisym] [--meshes 0.2,0.1,0.05,0.025]
+  scripts/python bench/extrusion_bench.py [FLOWFORM] [--cases plane,axisym] [--meshes 0.2,0.1,0.05,0.025]
                            [--repeats 3] [--repeat-below S] [--max-run-seconds S]
                            [--timeout S] [--out DIR] [--json OUT.json]
-  bench/extrusion_bench.py --report OUT.json [OUT.json ...]
+  scripts/python bench/extrusion_bench.py --report OUT.json [OUT.json ...]
 
   FLOWFORM              the flowform executable (default: build/flowform of this repository)
   --meshes              bulk mesh sizes h (hc = h/4); the Richardson extrapolation uses
@@ -52,16 +51,14 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import csvio, default_flowform, launcher, repo_path  # noqa: E402
-from flowform_tools.benchmark import require_tools  # noqa: E402
-from flowform_tools.case import FIXED_MESH, Case  # noqa: E402
-from flowform_tools.launcher import lit  # noqa: E402
-from flowform_tools.machine import binary_built, load, machine_info  # noqa: E402
-from flowform_tools.numerics import median, observed_order, richardson  # noqa: E402
+from flowform_tools import csvio, default_flowform, launcher, repo_path
+from flowform_tools.benchmark import require_tools
+from flowform_tools.case import FIXED_MESH, Case
+from flowform_tools.launcher import lit
+from flowform_tools.machine import binary_built, load, machine_info
+from flowform_tools.numerics import median, observed_order, richardson
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from extrusion_tables import fmt, print_case  # noqa: E402
+from extrusion_tables import fmt, print_case
 
 CASES = {  # name: (case file, axisymmetric)
     "plane": ("xml/extrusion.xml", False),

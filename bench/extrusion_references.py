@@ -1,8 +1,7 @@
-#!/usr/bin/python3
 """Reference values of the extrusion's ram force F and dF/dnu for the error-estimate
 effectivities (docs/theory.md §7, docs/BENCHMARKS.md §10), independent of the estimator.
 
-usage: bench/extrusion_references.py [FLOWFORM] [--families "H:HC,...;H:HC,..."] [--nu 0,0.1,0.3]
+usage: scripts/python bench/extrusion_references.py [FLOWFORM] [--families "H:HC,...;H:HC,..."] [--nu 0,0.1,0.3]
                                      [--scenes plane,axisym] [--json FILE] [--workdir DIR] [--reuse]
                                      [--from-json FILE] [--effectivity H:HC]
 
@@ -28,8 +27,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import launcher, summary  # noqa: E402
+from flowform_tools import launcher, summary
 
 WALLS = ("container", "die_face", "die_land")
 CASES = {"plane": "xml/extrusion.xml", "axisym": "xml/extrusion_axisym.xml"}

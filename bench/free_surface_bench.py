@@ -1,11 +1,10 @@
-#!/usr/bin/python3
 """The free-surface loop's cost (docs/theory.md §3): per scene and mesh, the surface updates, the
 Newton iterations (all, and per re-solve after an update), the time split (first solve with
 its status loop, surface updates + mesh motion, re-solves), the value the scene is about, and
 how all of it grows with refinement; with Anderson's acceleration (the default), Aitken's
 relaxation and without either (the paper's plain update): Free Surface/Relaxation.
 
-usage: bench/free_surface_bench.py [FLOWFORM] [--workdir /tmp/flowform_fs_bench] [--repeat 3]
+usage: scripts/python bench/free_surface_bench.py [FLOWFORM] [--workdir /tmp/flowform_fs_bench] [--repeat 3]
                                    [--quick] [--relaxations Anderson,Aitken,None] [--no-cutting]
 
 Scenes: the Newtonian die swell, planar and axisymmetric (h = 0.2, 0.1, 0.05, 0.025; hc = h/5),
@@ -21,8 +20,7 @@ import statistics
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import launcher, machine, summary  # noqa: E402
+from flowform_tools import launcher, machine, summary
 
 NO_FILES = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
 

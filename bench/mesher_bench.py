@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """What meshing in a process of its own costs (docs/BENCHMARKS.md, "The mesher process").
 
 Runs each scene with two flowform binaries, alternated, ROUNDS times: BASELINE (a build that
@@ -9,7 +8,7 @@ both (they must agree: the same mesh, the same solve). The load average is print
 after; compare only ratios measured on an idle machine.
 
 usage:
-  /usr/bin/python3 bench/mesher_bench.py BASELINE [CANDIDATE] [--rounds 5] [--scenes channel,...]
+  scripts/python bench/mesher_bench.py BASELINE [CANDIDATE] [--rounds 5] [--scenes channel,...]
 """
 import argparse
 import os
@@ -18,10 +17,9 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import default_flowform, launcher, repo_path  # noqa: E402
-from flowform_tools.machine import machine_info  # noqa: E402
-from flowform_tools.tables import markdown  # noqa: E402
+from flowform_tools import default_flowform, launcher, repo_path
+from flowform_tools.machine import machine_info
+from flowform_tools.tables import markdown
 
 SCENES = {  # scene -> overrides: each run makes the meshes the scene asks for
     "channel": ["Responses/plastic_power/Type=Plastic Power"],

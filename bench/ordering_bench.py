@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Fill-reducing ordering of the direct solver: nested dissection vs AMD (docs/BENCHMARKS.md §6).
 
 For each channel size (xml/channel.xml, N cells across the height, dofs = 3 (N+1)(2N+1)),
@@ -15,7 +14,7 @@ difference of two responses between the orderings (plastic power, mean inlet pre
 both solve the same matrix, so they may differ only by round-off.
 
 usage:
-  /usr/bin/python3 bench/ordering_bench.py [FLOWFORM] [--sizes 40,81,163,230,408]
+  scripts/python bench/ordering_bench.py [FLOWFORM] [--sizes 40,81,163,230,408]
       [--element tri|quad] [--json OUT.json]
 
 Runs go through python/flowform_tools (benchmark.run_case: one run under time -v); every
@@ -27,13 +26,12 @@ import os
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import default_flowform, repo_path  # noqa: E402
-from flowform_tools.case import Case  # noqa: E402
-from flowform_tools.benchmark import (CHANNEL_MATERIALS as MATERIALS, ELEMENTS, NO_OUTPUT,  # noqa: E402
+from flowform_tools import default_flowform, repo_path
+from flowform_tools.case import Case
+from flowform_tools.benchmark import (CHANNEL_MATERIALS as MATERIALS, ELEMENTS, NO_OUTPUT,
                                       channel_dofs, channel_size, require_tools, run_case)
-from flowform_tools.machine import machine_info  # noqa: E402
-from flowform_tools.numerics import relative_difference  # noqa: E402
+from flowform_tools.machine import machine_info
+from flowform_tools.numerics import relative_difference
 
 ORDERINGS = ["Nested Dissection", "AMD"]
 

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Cost of the sensitivity analysis on the channel scene (issue #4).
 
 For each mesh size of the channel (xml/channel.xml, σ0 = 0.5, n = 5: nonlinear, Newtonian
@@ -32,10 +31,10 @@ case's loaded boundary, the inlet).
 The full-run FD derivatives of those are compared with the DDM's.
 
 usage:
-  /usr/bin/python3 bench/sensitivity_bench.py [FLOWFORM] [--sizes 40,81,163,230]
+  scripts/python bench/sensitivity_bench.py [FLOWFORM] [--sizes 40,81,163,230]
       [--element tri|quad] [--full-fd-max-dofs 200000] [--budget-seconds 3600]
       [--out /tmp/sensitivity_bench]
-  /usr/bin/python3 bench/sensitivity_bench.py --report OUT/sensitivity_bench.json
+  scripts/python bench/sensitivity_bench.py --report OUT/sensitivity_bench.json
 
 Runs go through python/flowform_tools (benchmark.run_case: one case under /usr/bin/time -v);
 every number is read from summary.json. The exit status is 0 when every run exited 0.
@@ -47,13 +46,12 @@ import os
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import default_flowform, repo_path  # noqa: E402
-from flowform_tools.benchmark import (ELEMENTS, NO_OUTPUT, channel_dofs, channel_size,  # noqa: E402
+from flowform_tools import default_flowform, repo_path
+from flowform_tools.benchmark import (ELEMENTS, NO_OUTPUT, channel_dofs, channel_size,
                                       require_tools, run_case)
-from flowform_tools.case import Case  # noqa: E402
-from flowform_tools.machine import machine_info, uptime  # noqa: E402
-from flowform_tools.summary import lookup  # noqa: E402
+from flowform_tools.case import Case
+from flowform_tools.machine import machine_info, uptime
+from flowform_tools.summary import lookup
 
 PARAMETERS = ["Yield Stress", "Rate Exponent", "Rate Constant"]
 DEFAULT_SIZES = [40, 81, 163, 230]  # 9 963, 40 098, 160 884, 319 473 dofs; 408: 1 002 459

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Direct solvers KLU2 vs MUMPS (issue #10): one factorization, ranks and BLAS threads, and
 the nonlinear extrusion with its contact loop.
 
@@ -35,14 +34,13 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import default_flowform, launcher, repo_path  # noqa: E402
-from flowform_tools.benchmark import (CHANNEL_MATERIALS, NO_OUTPUT, channel_size,  # noqa: E402
+from flowform_tools import default_flowform, launcher, repo_path
+from flowform_tools.benchmark import (CHANNEL_MATERIALS, NO_OUTPUT, channel_size,
                                       require_tools)
-from flowform_tools.case import FIXED_MESH, Case  # noqa: E402
-from flowform_tools.launcher import lit  # noqa: E402
-from flowform_tools.machine import binary_built, load, machine_info  # noqa: E402
-from flowform_tools.numerics import median, relative_difference  # noqa: E402
+from flowform_tools.case import FIXED_MESH, Case
+from flowform_tools.launcher import lit
+from flowform_tools.machine import binary_built, load, machine_info
+from flowform_tools.numerics import median, relative_difference
 
 CASES = {"plane": "xml/extrusion.xml", "axisym": "xml/extrusion_axisym.xml"}
 TYPE = "Solver/Linear Solver/Type="

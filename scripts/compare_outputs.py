@@ -1,10 +1,9 @@
-#!/usr/bin/env python3
 """Compares every summary.json below two output trees (e.g. two builds' build/tests after
 the same ctest run): the responses, sensitivities and FD-check values to a relative
 tolerance, and the counts (Newton iterations, contact changes, factorizations) exactly.
 A refactoring that claims "no change of behaviour" is checked with it:
 
-    scripts/compare_outputs.py OLD/build/tests NEW/build/tests --rtol 1e-12
+    scripts/python scripts/compare_outputs.py OLD/build/tests NEW/build/tests --rtol 1e-12
 
 Prints one row per run (worst relative difference, counts equal or not) and a closing
 'N passed, N failed' line; exit status 1 when any run differs or is missing on one side.
@@ -14,8 +13,7 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-from flowform_tools import summary as summaries  # noqa: E402
+from flowform_tools import summary as summaries
 
 COUNTS = ["converged", "exit_status", "newton_iterations", "contact_changes", "continuation_stages",
           "linear_solver.factorizations", "linear_solver.solves", "dofs"]

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The cutting scene's pictures (docs/cutting.md; the paper's figs. 5-7) from one run of
 xml/cutting.xml:
 
@@ -10,7 +9,7 @@ xml/cutting.xml:
                            Finite Difference Check)
 
 usage:
-  scripts/plot_cutting.py RUN [--out DIR] [--zoom X0,X1,Y0,Y1]
+  scripts/python scripts/plot_cutting.py RUN [--out DIR] [--zoom X0,X1,Y0,Y1]
 
   RUN     a run directory of xml/cutting.xml (summary.json and solution.h5)
   --out   where the PNGs go (default: RUN)
@@ -22,8 +21,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import h5io, plotting  # noqa: E402
+from flowform_tools import h5io, plotting
 
 
 def window(text):

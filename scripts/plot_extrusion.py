@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Plots of the extrusion scene (docs/theory.md §6.2, docs/extrusion.md) from flowform's outputs.
 
   force_vs_nu.png      ram force (and the ∫p ds check), ram pressure and dead zone against
@@ -12,7 +11,7 @@
                        scale) of one run, from its solution.h5
 
 usage:
-  scripts/plot_extrusion.py [--sweep out/sweep] [--runs DIR ...] [--map-run DIR]
+  scripts/python scripts/plot_extrusion.py [--sweep out/sweep] [--runs DIR ...] [--map-run DIR]
                             [--out DIR] [--walls container,die_face,die_land] [--mesh]
                             [--xlabel TEXT]
 
@@ -41,14 +40,13 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import plotting  # noqa: E402
-from flowform_tools.case import Scene  # noqa: E402
-from flowform_tools.plotting import chain_walls, read_solution, run_summary as read_summary, triangulate  # noqa: E402
-from flowform_tools.sweep import num, read as read_sweep  # noqa: E402
+from flowform_tools import plotting
+from flowform_tools.case import Scene
+from flowform_tools.plotting import chain_walls, read_solution, run_summary as read_summary, triangulate
+from flowform_tools.sweep import num, read as read_sweep
 
 plt = plotting.pyplot()
-import matplotlib.tri as mtri  # noqa: E402
+import matplotlib.tri as mtri  # noqa: E402 (after plotting.pyplot() chose the Agg backend)
 from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
 

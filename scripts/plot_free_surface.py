@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Plots of runs with free surfaces (docs/theory.md §3) from flowform's outputs.
 
   free_surface_<run>.png   |u| on the converged (moved) mesh with the free surfaces drawn over it,
@@ -9,7 +8,7 @@
                            or the runs' names
 
 usage:
-  scripts/plot_free_surface.py RUN [RUN ...] [--out DIR] [--labels A,B,...] [--zoom X0,X1,Y0,Y1]
+  scripts/python scripts/plot_free_surface.py RUN [RUN ...] [--out DIR] [--labels A,B,...] [--zoom X0,X1,Y0,Y1]
 
   RUN      a run directory (summary.json, solution.h5 and the boundary CSVs)
   --out    where the PNGs go (default: the first run's directory)
@@ -25,8 +24,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import plotting  # noqa: E402
+from flowform_tools import plotting
 
 
 def surface_groups(summary):

@@ -1,17 +1,16 @@
-#!/usr/bin/python3
 """Plots of the friction sensitivity of the extrusion (paper figs. 3b and 4, docs/sensitivity.md)
 from a friction sweep run with sensitivities and their finite-difference check:
 
-  scripts/sweep_friction.py --out out/sweep_ddm --set "Sensitivity/Parameters={Friction Coefficient}" \\
+  scripts/python scripts/sweep_friction.py --out out/sweep_ddm --set "Sensitivity/Parameters={Friction Coefficient}" \\
       --set "Sensitivity/Finite Difference Check=true"
-  scripts/plot_sensitivity.py --sweep out/sweep_ddm
+  scripts/python scripts/plot_sensitivity.py --sweep out/sweep_ddm
 
   force_sensitivity.png   ram force F and dF/dν against ν: DDM (line) and central differences
                           (open markers; red where the check found a node switching state)
   wall_sensitivity.png    du_t/dν along the walls container -> die_face -> die_land (u_t along
                           the material flow), DDM full and FD dotted, one colour per ν
 
-usage: scripts/plot_sensitivity.py [--sweep out/sweep] [--out DIR] [--parameter NAME]
+usage: scripts/python scripts/plot_sensitivity.py [--sweep out/sweep] [--out DIR] [--parameter NAME]
                                    [--response NAME] [--walls W1,W2,...]
 
   --response  default: the runs' Boundary Force response (ram_force)
@@ -25,11 +24,10 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import plotting  # noqa: E402
-from flowform_tools.case import Scene  # noqa: E402
-from flowform_tools.plotting import oriented_column, run_summary as read_summary  # noqa: E402
-from flowform_tools.sweep import num, read as read_sweep  # noqa: E402
+from flowform_tools import plotting
+from flowform_tools.case import Scene
+from flowform_tools.plotting import oriented_column, run_summary as read_summary
+from flowform_tools.sweep import num, read as read_sweep
 
 plt = plotting.pyplot()
 

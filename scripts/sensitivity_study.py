@@ -1,8 +1,7 @@
-#!/usr/bin/python3
 """Reproduces the measurements of docs/sensitivity.md: DDM against the built-in central
 differences on the extrusion and the channel.
 
-usage: scripts/sensitivity_study.py [--flowform build/flowform] [--out out/sensitivity_study]
+usage: scripts/python scripts/sensitivity_study.py [--flowform build/flowform] [--out out/sensitivity_study]
                                     [--only nu,step,jacobian,scales,axisym]
 
 Each study prints a markdown table; the runs stay under --out (one directory each).
@@ -15,11 +14,9 @@ Each study prints a markdown table; the runs stay under --out (one directory eac
 """
 import argparse
 import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import REPO, default_flowform, launcher, summary  # noqa: E402
-from flowform_tools.case import FIXED_MESH, Case  # noqa: E402
+from flowform_tools import REPO, default_flowform, launcher, summary
+from flowform_tools.case import FIXED_MESH, Case
 
 
 def run(args, case, name, sets):

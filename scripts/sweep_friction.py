@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Friction sweep of the extrusion scene (docs/theory.md §6.2, docs/extrusion.md).
 
 Runs flowform once per friction coefficient ν, setting
@@ -16,7 +15,7 @@ it is an independent check of the solver's ram_force (it agrees up to the discre
 of the boundary pressure).
 
 usage:
-  scripts/sweep_friction.py [--flowform build/flowform] [--case xml/extrusion.xml]
+  scripts/python scripts/sweep_friction.py [--flowform build/flowform] [--case xml/extrusion.xml]
                             [--nu 0,0.05,0.1,0.2,0.3,0.5] [--out out/sweep]
                             [--set P=V ...] [--walls container,die_face,die_land]
                             [--param PATH ...] [--jobs N] [--timeout S] [--quiet]
@@ -41,11 +40,10 @@ import concurrent.futures
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
-from flowform_tools import REPO, csvio, launcher  # noqa: E402
-from flowform_tools.case import FIXED_MESH  # noqa: E402
-from flowform_tools.case import Case, Scene  # noqa: E402
-from flowform_tools.sweep import label, parse_values, write  # noqa: E402
+from flowform_tools import REPO, csvio, launcher
+from flowform_tools.case import FIXED_MESH
+from flowform_tools.case import Case, Scene
+from flowform_tools.sweep import label, parse_values, write
 
 
 def resolve(path):

@@ -13,20 +13,26 @@ tests/regression/, bench/ and scripts/ do not each carry their own launcher and 
   h5io       solution.h5: mesh and nodal/cell fields (needs h5py and numpy)
   sweep      sweep values ("0,0.1" or "0:0.5:0.1") and sweep.csv
   numerics   observed order of convergence, Richardson extrapolation, relative difference
-  shear_plane  the thin shear plane's equilibrium at any φ (Ernst & Merchant), and the
-             cutting run's primary shear band read off its solution.h5 (angle, p/k)
   machine    machine and binary information printed with benchmark results
   msh        small edits of gmsh 4 ASCII meshes
   tables     markdown tables of the benchmarks' reports
   plotting   matplotlib (Agg) helpers shared by the plot scripts (needs matplotlib)
+  checks     the whole-run checks' one line per check and verdict (tests/regression/)
+  benchmark  the benchmarks' channel sizes and one timed run (bench/)
 
-Scripts find the package relative to their own file, without an install step:
+A scene's own theory lives beside the checks that assert it, not here: tests/regression/
+extrusion/ (slip-line values), tests/regression/cutting/ (the shear plane). The tests of this
+package are tests/unit/python/ (ctest -L unit).
 
-    sys.path.insert(0, os.path.join(<repository>, "python"))
-    from flowform_tools import launcher
+The package is found through PYTHONPATH, one way for every caller, with no sys.path edits in
+the scripts: ctest sets it for every test (tests/CMakeLists.txt), and the scripts are run
+through the launcher that sets the same path (python/ and tests/regression/):
+
+    scripts/python scripts/plot_extrusion.py --sweep out/sweep
+    scripts/python bench/channel_bench.py --quick
 
 Only the standard library is imported here and by launcher, summary, case, csvio, sweep,
-numerics, machine, msh and tables; h5io, plotting and shear_plane.band_state import numpy, h5py and matplotlib (Debian's
+numerics, machine, msh and tables; h5io and plotting import numpy, h5py and matplotlib (Debian's
 /usr/bin/python3 has them: python3-numpy, python3-h5py, python3-matplotlib).
 """
 import os

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Runs one flowform command and checks how it ended (tests/regression/BadInput.cmake).
 
 usage: check_exit.py --outdir DIR [--status N] [--stderr-contains TEXT ...]
@@ -32,8 +31,7 @@ import os
 import shutil
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import launcher, summary as summary_module  # noqa: E402
+from flowform_tools import launcher, summary as summary_module
 
 
 def main():

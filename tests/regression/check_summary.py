@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Runs flowform and checks entries of summary.json.
 
 usage: check_summary.py [--expect-exit N] FLOWFORM CASE.xml OUTDIR [--set P=V ...] -- KEY=VALUE ...
@@ -7,11 +6,9 @@ compared exactly (JSON literal: true, 1, "text"). The run must exit N (default 0
 summary.json must exist whatever the status.
 """
 import json
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import launcher, summary  # noqa: E402
+from flowform_tools import launcher, summary
 
 
 def main():

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Runs a case serially and on N ranks and compares solution.h5 field by field.
 
 usage: compare_runs.py FLOWFORM MPIEXEC NP CASE.xml WORKDIR [--tol TOL] [--set P=V ...]
@@ -18,8 +17,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import h5io, launcher, summary  # noqa: E402
+from flowform_tools import h5io, launcher, summary
 
 TOL = 1e-9
 TOL_SHAPE = 1e-6

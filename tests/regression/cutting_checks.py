@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Orthogonal cutting with a free chip (xml/cutting.xml, docs/cutting.md).
 
 usage: cutting_checks.py FLOWFORM SOURCE_DIR WORKDIR
@@ -17,7 +16,7 @@ usage: cutting_checks.py FLOWFORM SOURCE_DIR WORKDIR
      (measured 0.978 ν: the nodes near the tip, where the chip barely slides, stick).
    - The shear angle is the chip ratio's (tan φ = t/t_c at α = 0) to 1e-10.
    - The thin shear plane's mechanics at the model's own φ (Ernst & Merchant's equilibrium, valid
-     at any φ; python/flowform_tools/shear_plane.py): the band in the strain-rate field runs at φ
+     at any φ; tests/regression/cutting/shear_plane.py): the band in the strain-rate field runs at φ
      within 2° (measured 25.99° against 25.79°), its mean stress p/k = tan(φ + θ), tan θ = F_t /
      drive force, within 5 % (measured 0.765 against 0.772).
    - The derivatives' sizes against the thin plane: the drive force's total dF/dν by DDM is the
@@ -83,8 +82,8 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import case as cases, checks, csvio, launcher, shear_plane, summary  # noqa: E402
+from cutting import rules, shear_plane
+from flowform_tools import case as cases, checks, csvio, launcher, summary
 
 NO_FILES = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
 SENSITIVITY = ["Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true",
@@ -142,7 +141,7 @@ def shear_plane_derivative(s, f, nu, label):
     dphi, dtheta, plane = shear_plane.run_derivatives(f, d)
     return checks.check(abs(plane - d["drive_force"]) <= 0.1 * abs(d["drive_force"]),
                         f"{label}: d(drive force)/dν total DDM {d['drive_force']:.4f}, the plane's {plane:.4f} "
-                        f"(dφ/dν = {dphi:.4f} rad, Merchant's {-0.5 / (1 + nu * nu):.4f}; dθ/dν = {dtheta:.4f})")
+                        f"(dφ/dν = {dphi:.4f} rad, Merchant's {rules.merchant_shear_angle_derivative(nu):.4f}; dθ/dν = {dtheta:.4f})")
 
 
 def lee_shaffer_geometry(flowform, case, work):

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The two-level error estimate and the adaptive loop (docs/theory.md §7).
 
 usage: error_estimate_checks.py FLOWFORM SOURCE_DIR WORKDIR
@@ -37,8 +36,7 @@ usage: error_estimate_checks.py FLOWFORM SOURCE_DIR WORKDIR
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import checks, launcher, summary  # noqa: E402
+from flowform_tools import checks, launcher, summary
 
 # (scene, nu) -> (F_ref, dF/dnu_ref or None): docs/BENCHMARKS.md §10.
 REFERENCE = {("xml/extrusion.xml", "0.0"): (3.30663, 4.4505), ("xml/extrusion.xml", "0.1"): (3.73469, None),

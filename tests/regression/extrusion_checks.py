@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Verification checks of the extrusion scene (docs/theory.md §2, §6.2; docs/extrusion_verification.md).
 
 usage: extrusion_checks.py SUBCOMMAND FLOWFORM SOURCE_DIR OUTDIR [--meshes H,H,...] [--jobs N]
@@ -35,15 +34,11 @@ command line (the interface tests/regression/Extrusion.cmake uses).
 Debian's /usr/bin/python3 (numpy, h5py). `gmsh` (the command) for `sticking` only.
 """
 import argparse
-import os
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "python"))
-sys.path.insert(0, HERE)
-from extrusion import contact, convergence, limits, penalty, power, theory  # noqa: E402
-from extrusion.common import Checks, Runner  # noqa: E402
+from extrusion import contact, convergence, limits, penalty, power, theory
+from extrusion.common import Checks, Runner
 
 COMMANDS = {}
 for module in (contact, power, convergence, penalty, limits, theory):

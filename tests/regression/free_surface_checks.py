@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Free surfaces that become streamlines (docs/theory.md §3).
 
 usage: free_surface_checks.py FLOWFORM SOURCE_DIR WORKDIR
@@ -60,8 +59,7 @@ usage: free_surface_checks.py FLOWFORM SOURCE_DIR WORKDIR
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import checks, launcher, summary  # noqa: E402
+from flowform_tools import checks, launcher, summary
 
 NO_FILES = ["Output/Write Solution=false", "Output/Boundary CSV=false"]
 

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The discrete power balance of a converged run, which holds to solver tolerance:
 
     Σ_tools Boundary Power = Plastic + Friction + Penalty + Stabilization Power
@@ -10,11 +9,9 @@ the contact terms and the assembly. |F| <= 1e-10 at convergence bounds the power
 
 usage: power_balance.py FLOWFORM CASE.xml OUTDIR TOOL [--set P=V ...]
 """
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import launcher  # noqa: E402
+from flowform_tools import launcher
 
 TOL = 1e-8
 

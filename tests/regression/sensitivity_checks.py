@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Whole-run checks of the sensitivity analysis (docs/theory.md §4, docs/sensitivity.md).
 
 usage: sensitivity_checks.py SUBCOMMAND FLOWFORM SOURCE_DIR WORK_DIR [options]
@@ -34,8 +33,7 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import case as case_module, csvio, h5io, launcher, summary  # noqa: E402
+from flowform_tools import case as case_module, csvio, h5io, launcher, summary
 
 TOL = 1e-5
 

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The two contact-status updates end in the same state (docs/contact.md, "Certain Iterate").
 
 usage: status_update_checks.py FLOWFORM SOURCE_DIR WORKDIR [--nu 0,0.05,...] [--set P=V ...]
@@ -21,8 +20,7 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
-from flowform_tools import csvio, launcher, summary  # noqa: E402
+from flowform_tools import csvio, launcher, summary
 
 WALLS = ("container", "die_face", "die_land")
 TOL = 1e-6

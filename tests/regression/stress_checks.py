@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Stress battery of the nonlinear solve: cases at the edges of the parameter ranges a user
 may set, each of which must converge (exit 0, converged: true) and give finite responses.
 Each case is one line of CASES: a name, the case file and its --set overrides. A group
@@ -14,9 +13,8 @@ import os
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
-from flowform_tools import launcher  # noqa: E402
-from flowform_tools.case import Case  # noqa: E402
+from flowform_tools import launcher
+from flowform_tools.case import Case
 
 CH = "xml/channel.xml"
 EX = "xml/extrusion.xml"
