@@ -1,4 +1,4 @@
-// Extrudate (die) swell, docs/theory.md §8.3: fully developed flow in a die leaves it into a
+// Extrudate (die) swell, docs/theory.md §3.3: fully developed flow in a die leaves it into a
 // traction-free jet whose surface is a free surface. Half of the section, cut by the
 // symmetry line y = 0 (plane) or the axis (transpose = 1, x = r):
 //
