@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "flowform/assembly/Assembler.hpp"
-#include "flowform/assembly/Responses.hpp"
+#include "flowform/responses/Responses.hpp"
 #include "flowform/bc/BoundaryConditions.hpp"
 #include "flowform/contact/ContactWall.hpp"
 #include "flowform/discretization/DofMap.hpp"
