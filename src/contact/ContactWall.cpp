@@ -130,11 +130,9 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   refreshGeometry(mesh);
   m_toolCoords = m_coords;
   m_toolNormals = m_curve.normals;
-  if (m_settings.releasedFreeSurface) {
-    if (!mesh.hasBoundary(m_settings.upstreamGroup))
-      throw InputError("Boundary Conditions/" + group + "/Start Group: mesh '" + mesh.source +
-                       "' has no boundary group '" + m_settings.upstreamGroup + "'; it has: " + mesh.boundaryNames());
-  }
+  if (m_settings.releasedFreeSurface && !mesh.hasBoundary(m_settings.upstreamGroup))
+    throw InputError("Boundary Conditions/" + group + "/Start Group: mesh '" + mesh.source +
+                     "' has no boundary group '" + m_settings.upstreamGroup + "'; it has: " + mesh.boundaryNames());
   if (!m_settings.upstreamGroup.empty() && mesh.hasBoundary(m_settings.upstreamGroup)) {
     const CurveEnds ends = endsOn(m_curve, mesh.boundary(m_settings.upstreamGroup));
     m_firstIsUpstream = ends.first;

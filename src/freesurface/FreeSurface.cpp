@@ -157,7 +157,7 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
     std::vector<GO> nodes = orderedFrom(mesh, wall.curve(), wall.upstreamGroup(), where);
     Surface s = make(wall.name(), nodes, where, false);
     s.wall = static_cast<int>(w);
-    const bool reversed = nodes.front() != wall.curve().nodes.front();
+    const bool reversed = !wall.firstNodeIsUpstream();  // orderedFrom ran from the same end
     for (int k = 0; k < wall.numNodes(); ++k) s.wallIndex.push_back(reversed ? wall.numNodes() - 1 - k : k);
     m_surfaces.push_back(std::move(s));
   }
