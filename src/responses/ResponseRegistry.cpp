@@ -1,5 +1,6 @@
 #include "flowform/responses/ResponseRegistry.hpp"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -94,8 +95,8 @@ void buildValidResponseParameters(const ValidList& list) {
       "Type", types.front().name, "what to compute (include/flowform/responses/, one file per type)", names(),
       docs(), indices(), &valid);
   // The union of the types' entries, in the order first declared; each entry's doc says
-  // which types read it and how ("Boundary Force: the group the tool acts on; ...").
-  std::map<std::string, std::string> uses;
+  // which types read it and how ("Boundary Force, Mean Pressure: the group the tool acts on; ...").
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> uses;  // entry -> (doc, types)
   const std::vector<Declare> declare = declarations(RegisteredResponses{});
   for (size_t i = 0; i < declare.size(); ++i) {
     Teuchos::ParameterList own;
@@ -103,11 +104,18 @@ void buildValidResponseParameters(const ValidList& list) {
     for (auto it = own.begin(); it != own.end(); ++it) {
       const std::string& name = own.name(it);
       if (!valid.isParameter(name)) valid.setEntry(name, own.entry(it));
-      std::string& use = uses[name];
-      use += (use.empty() ? "" : "; ") + types[i].name + ": " + own.entry(it).docString();
+      auto& docs = uses[name];
+      const std::string& doc = own.entry(it).docString();
+      const auto same = std::find_if(docs.begin(), docs.end(), [&](const auto& d) { return d.first == doc; });
+      if (same == docs.end()) docs.push_back({doc, types[i].name});
+      else same->second += ", " + types[i].name;
     }
   }
-  for (const auto& [name, use] : uses) valid.getEntryRCP(name)->setDocString(use);
+  for (const auto& [name, docs] : uses) {
+    std::string text;
+    for (const auto& [doc, users] : docs) text += (text.empty() ? "" : "; ") + users + ": " + doc;
+    valid.getEntryRCP(name)->setDocString(text);
+  }
 }
 
 }  // namespace

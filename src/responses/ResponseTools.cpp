@@ -100,8 +100,7 @@ void declareReferenceThickness(Teuchos::ParameterList& list) {
 }
 
 void ShearAngle::declareParameters(Teuchos::ParameterList& list) {
-  declareBoundary(list, "the group the chip leaves through");
-  declareReferenceThickness(list);
+  ThicknessRatio::declareParameters(list);
   list.set("Rake Angle", 0.0, "the tool's rake angle α [degrees]", inRange(-89.0, 89.0));
 }
 

@@ -16,6 +16,7 @@ struct ShearAngle {
   static constexpr bool kNeedsBoundary = true, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
                         kDifferentiable = true;
 
+  /// Thickness Ratio's entries and the Rake Angle.
   static void declareParameters(Teuchos::ParameterList& list);
   explicit ShearAngle(const Teuchos::ParameterList& p)
       : m_boundary(p.get<std::string>("Boundary")),
