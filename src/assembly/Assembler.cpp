@@ -53,7 +53,7 @@ void Assembler::setContactWalls(const std::vector<ContactWall>* walls) {
     const ContactWall& wall = (*walls)[w];
     for (int k = 0; k < wall.numNodes(); ++k) {
       const LO node = m_dofMap.overlapIndex(wall.curve().nodes[k]);
-      if (node < 0 || node >= m_dofMap.numOwnedNodes()) continue;  // the owner assembles it
+      if (!m_dofMap.ownsNode(node)) continue;  // the owner assembles it
       auto local = [&](int j) { return j < 0 ? LO(-1) : m_dofMap.overlapIndex(wall.curve().nodes[j]); };
       m_wallNodes.push_back({static_cast<int>(w), k, node, local(wall.previous(k)), local(wall.next(k))});
     }

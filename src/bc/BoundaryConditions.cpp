@@ -9,6 +9,7 @@
 #include "flowform/mesh/BoundaryCurve.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/NumberRange.hpp"
+#include "flowform/core/ValidList.hpp"
 
 namespace flowform {
 
@@ -77,31 +78,30 @@ GO edgeKey(GO a, GO b, GO numNodes) { return std::min(a, b) * numNodes + std::ma
 
 }  // namespace
 
+static void buildValidGroupParameters(const ValidList& valid) {
+  Teuchos::setStringToIntegralParameter<int>(
+      "Type", "Traction", "Velocity: prescribed velocity components, or the velocity parallel to a straight "
+      "group (Parallel To); Symmetry: zero normal "
+      "velocity on a straight boundary; Traction: prescribed traction (default zero: free). "
+      "Traction X/Y act on any type, on the components it leaves free. Contact Wall: a frictional "
+      "tool wall (its parameters: contact/ContactWall.hpp). Free Surface: traction-free, moved until it is a "
+      "streamline (freesurface/FreeSurface.hpp, docs/theory.md §3)",
+      Teuchos::tuple<std::string>("Velocity", "Symmetry", "Traction", "Contact Wall", "Free Surface"), valid.get());
+  valid->set("Velocity X", 0.0, "prescribed u_x (Velocity type; omit to leave u_x free)", finiteNumber());
+  valid->set("Velocity Y", 0.0, "prescribed u_y (Velocity type; omit to leave u_y free)", finiteNumber());
+  valid->set("Parallel To", "",
+             "Velocity type: the name of a straight boundary group (a tool face); u·n = 0 with n that group's "
+             "normal, the tangential component left free (a chip leaving along an inclined rake face)");
+  valid->set("Release After Free Surfaces", false,
+             "Velocity type: the condition holds while the free surfaces first converge; then the group is "
+             "released (traction-free) and the free-surface loop goes on from that shape: a continuation for a "
+             "boundary the loop cannot converge free from the start (a curling chip's outlet)");
+  valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components", finiteNumber());
+  valid->set("Traction Y", 0.0, "traction t_y, force per unit area, on free components", finiteNumber());
+}
+
 Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParameters() {
-  static Teuchos::RCP<Teuchos::ParameterList> valid;
-  if (valid.is_null()) {
-    valid = Teuchos::rcp(new Teuchos::ParameterList("Boundary Condition"));
-    Teuchos::setStringToIntegralParameter<int>(
-        "Type", "Traction", "Velocity: prescribed velocity components, or the velocity parallel to a straight "
-        "group (Parallel To); Symmetry: zero normal "
-        "velocity on a straight boundary; Traction: prescribed traction (default zero: free). "
-        "Traction X/Y act on any type, on the components it leaves free. Contact Wall: a frictional "
-        "tool wall (its parameters: contact/ContactWall.hpp). Free Surface: traction-free, moved until it is a "
-        "streamline (freesurface/FreeSurface.hpp, docs/theory.md §3)",
-        Teuchos::tuple<std::string>("Velocity", "Symmetry", "Traction", "Contact Wall", "Free Surface"), valid.get());
-    valid->set("Velocity X", 0.0, "prescribed u_x (Velocity type; omit to leave u_x free)", finiteNumber());
-    valid->set("Velocity Y", 0.0, "prescribed u_y (Velocity type; omit to leave u_y free)", finiteNumber());
-    valid->set("Parallel To", "",
-               "Velocity type: the name of a straight boundary group (a tool face); u·n = 0 with n that group's "
-               "normal, the tangential component left free (a chip leaving along an inclined rake face)");
-    valid->set("Release After Free Surfaces", false,
-               "Velocity type: the condition holds while the free surfaces first converge; then the group is "
-               "released (traction-free) and the free-surface loop goes on from that shape: a continuation for a "
-               "boundary the loop cannot converge free from the start (a curling chip's outlet)");
-    valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components", finiteNumber());
-    valid->set("Traction Y", 0.0, "traction t_y, force per unit area, on free components", finiteNumber());
-  }
-  return valid;
+  return validListOnce<buildValidGroupParameters>("Boundary Condition");
 }
 
 BoundaryConditions::BoundaryConditions(const Teuchos::ParameterList& bcList, const Mesh& mesh,

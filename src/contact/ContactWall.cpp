@@ -9,13 +9,11 @@
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/NumberRange.hpp"
 #include "flowform/core/Log.hpp"
+#include "flowform/core/ValidList.hpp"
 
 namespace flowform {
 
-Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
-  static Teuchos::RCP<Teuchos::ParameterList> valid;
-  if (!valid.is_null()) return valid;
-  valid = Teuchos::rcp(new Teuchos::ParameterList("Contact Wall"));
+static void buildValidParameters(const ValidList& valid) {
   valid->set("Type", "Contact Wall", "a frictional contact wall (docs/theory.md §2)");
   // The choices are the registered laws (contact/friction/FrictionLaws.hpp), the first the default.
   Teuchos::Array<std::string> names;
@@ -68,7 +66,10 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
   valid->set("Start Group", "",
              "a Contact Wall with Released Nodes = Free Surface: the boundary group at the wall's upstream end; a Free "
              "Surface group: the boundary group that shares its fixed start (docs/theory.md §3.1)");
-  return valid;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {
+  return validListOnce<buildValidParameters>("Contact Wall");
 }
 
 ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList& params, const Mesh& mesh,
@@ -129,15 +130,15 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   refreshGeometry(mesh);
   m_toolCoords = m_coords;
   m_toolNormals = m_curve.normals;
-  if (m_settings.releasedFreeSurface) {
-    if (!mesh.hasBoundary(m_settings.upstreamGroup))
-      throw InputError("Boundary Conditions/" + group + "/Start Group: mesh '" + mesh.source +
-                       "' has no boundary group '" + m_settings.upstreamGroup + "'; it has: " + mesh.boundaryNames());
-    for (const auto& e : mesh.boundary(m_settings.upstreamGroup).edges)
-      for (GO node : e) {
-        if (node == m_curve.nodes.front()) m_upstreamEnd = 0;
-        if (node == m_curve.nodes.back() && !m_curve.closed) m_upstreamEnd = numNodes() - 1;
-      }
+  if (m_settings.releasedFreeSurface && !mesh.hasBoundary(m_settings.upstreamGroup))
+    throw InputError("Boundary Conditions/" + group + "/Start Group: mesh '" + mesh.source +
+                     "' has no boundary group '" + m_settings.upstreamGroup + "'; it has: " + mesh.boundaryNames());
+  if (!m_settings.upstreamGroup.empty() && mesh.hasBoundary(m_settings.upstreamGroup)) {
+    const CurveEnds ends = endsOn(m_curve, mesh.boundary(m_settings.upstreamGroup));
+    m_firstIsUpstream = ends.first;
+    // A free surface shares exactly one end with its Start Group (FreeSurface says so otherwise).
+    if (m_settings.releasedFreeSurface && ends.first) m_upstreamEnd = 0;
+    if (m_settings.releasedFreeSurface && ends.last && !m_curve.closed) m_upstreamEnd = numNodes() - 1;
   }
 }
 

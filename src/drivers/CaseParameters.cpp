@@ -12,14 +12,19 @@
 #include "flowform/drivers/OutputFields.hpp"
 #include "flowform/mesh/MeshReader.hpp"
 #include "flowform/solvers/NonlinearSolver.hpp"
-#include "flowform/assembly/Responses.hpp"
+#include "flowform/responses/ResponseRegistry.hpp"
+#include "flowform/responses/Responses.hpp"
 #include "flowform/sensitivity/Sensitivity.hpp"
 #include "flowform/contact/ContactWall.hpp"
 #include "flowform/freesurface/FreeSurface.hpp"
+#include "flowform/core/ValidList.hpp"
 
 namespace flowform {
 
 namespace {
+
+/// "Boundary Force or Mean Pressure": the response types the adaptive loop can target.
+std::string adaptivityTargets() { return responseTypeNames(&ResponseTypeInfo::adaptivityTarget, " or "); }
 
 using Teuchos::ParameterList;
 
@@ -70,10 +75,7 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
-Teuchos::RCP<const ParameterList> validCaseParameters() {
-  static Teuchos::RCP<ParameterList> valid;
-  if (!valid.is_null()) return valid;
-  valid = Teuchos::rcp(new ParameterList("flowform"));
+static void buildValidCaseParameters(const ValidList& valid) {
 
   ParameterList& problem = valid->sublist("Problem", false, "kind of model");
   Teuchos::setStringToIntegralParameter<int>("Geometry", "Plane Strain",
@@ -112,7 +114,7 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   const std::vector<std::string>& cellFields = cellFieldNames();
   output.set("Cell Fields", Teuchos::Array<std::string>(cellFields.begin(), cellFields.end()),
              "cell fields to write: any of " + joined(cellFields));
-  valid->sublist("Responses", false, "functionals by name (include/flowform/assembly/Responses.hpp)")
+  valid->sublist("Responses", false, "functionals by name (include/flowform/responses/Responses.hpp)")
       .sublist("<response name>", false, "one functional")
       .setParameters(*Responses::validParameters());
   ParameterList& estimation =
@@ -139,7 +141,7 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
                  "false: the sublist is kept but not used (the case's own mesh, solved once), e.g. "
                  "--set Adaptivity/Enabled=false on a scene that adapts by default");
   adaptivity.set("Responses", Teuchos::Array<std::string>(),
-                 "names of the responses (Boundary Force or Mean Pressure) whose relative error is to be met");
+                 "names of the responses (" + adaptivityTargets() + ") whose relative error is to be met");
   adaptivity.set("Target Relative Error", 5e-3, "|estimated error| / |value| to reach for every named response",
                  inRange(1e-8, 1.0));
   adaptivity.set("Maximum Cycles", 8, "solve-estimate-remesh cycles at most (the first mesh is cycle 0)",
@@ -172,7 +174,10 @@ Teuchos::RCP<const ParameterList> validCaseParameters() {
   valid->set("Sensitivity", *Sensitivity::validParameters(),
              "sensitivities by direct differentiation and their finite-difference check (docs/theory.md §4)");
   valid->sublist("Regression", false, "expected values for a regression checker");
-  return valid;
+}
+
+Teuchos::RCP<const ParameterList> validCaseParameters() {
+  return validListOnce<buildValidCaseParameters>("flowform");
 }
 
 void validateCase(ParameterList& params) {
@@ -204,8 +209,8 @@ void validateCase(ParameterList& params) {
   if (adaptivityRequested(params)) {
     const auto targets = params.sublist("Adaptivity").get<Teuchos::Array<std::string>>("Responses");
     if (targets.empty())
-      throw InputError("Adaptivity/Responses: name at least one response (Boundary Force or Mean Pressure) to "
-                       "adapt the mesh to");
+      throw InputError("Adaptivity/Responses: name at least one response (" + adaptivityTargets() +
+                       ") to adapt the mesh to");
     // Only the responses linear in the reactions have an adjoint, hence indicators.
     const ParameterList& responses = params.sublist("Responses");
     for (const std::string& name : targets) {
@@ -213,11 +218,11 @@ void validateCase(ParameterList& params) {
         throw InputError("Adaptivity/Responses: '" + name + "' is not one of the case's Responses");
       const ParameterList& response = responses.sublist(name);
       const std::string type =
-          response.isParameter("Type") ? response.get<std::string>("Type") : std::string("Boundary Force");
-      if (type != "Boundary Force" && type != "Mean Pressure")
-        throw InputError("Adaptivity/Responses: '" + name + "' is a " + type +
-                         " response; the adaptive loop needs Boundary Force or Mean Pressure responses (their "
-                         "adjoint gives the indicators)");
+          response.isParameter("Type") ? response.get<std::string>("Type") : responseTypes().front().name;
+      const int index = responseTypeIndex(type);
+      if (index < 0 || !responseTypes()[index].adaptivityTarget)
+        throw InputError("Adaptivity/Responses: '" + name + "' is a " + type + " response; the adaptive loop needs " +
+                         adaptivityTargets() + " responses (their adjoint gives the indicators)");
     }
     const std::string file = params.sublist("Mesh").get<std::string>("File");
     if (file.size() < 4 || file.substr(file.size() - 4) != ".geo")

@@ -9,6 +9,7 @@
 
 #include "flowform/core/InputError.hpp"
 #include "flowform/mesh/BoundaryCurve.hpp"
+#include "flowform/core/ValidList.hpp"
 
 namespace flowform {
 
@@ -26,18 +27,12 @@ std::vector<GO> orderedFrom(const Mesh& mesh, const BoundaryCurve& curve, const 
     throw InputError(where + "/Start Group: mesh '" + mesh.source + "' has no boundary group '" + start +
                      "'; it has: " + mesh.boundaryNames());
   if (curve.closed) throw InputError(where + ": a free surface must be an open curve, and this one is closed");
-  const BoundaryGroup& group = mesh.boundary(start);
-  auto touches = [&](GO node) {
-    for (const auto& e : group.edges)
-      if (e[0] == node || e[1] == node) return true;
-    return false;
-  };
-  std::vector<GO> nodes = curve.nodes;
-  const bool first = touches(nodes.front()), last = touches(nodes.back());
-  if (first == last)
+  const CurveEnds ends = endsOn(curve, mesh.boundary(start));
+  if (ends.first == ends.last)
     throw InputError(where + "/Start Group: group '" + start + "' must share exactly one end of the surface " +
-                     (first ? "(it shares both)" : "(it shares neither)"));
-  if (last) std::reverse(nodes.begin(), nodes.end());
+                     (ends.first ? "(it shares both)" : "(it shares neither)"));
+  std::vector<GO> nodes = curve.nodes;
+  if (ends.last) std::reverse(nodes.begin(), nodes.end());
   return nodes;
 }
 
@@ -59,10 +54,7 @@ double flowAngle(const Point& xa, const Point& xb, const Point& mean) {
 
 }  // namespace
 
-Teuchos::RCP<const Teuchos::ParameterList> validFreeSurfaceParameters() {
-  static Teuchos::RCP<Teuchos::ParameterList> valid;
-  if (!valid.is_null()) return valid;
-  valid = Teuchos::rcp(new Teuchos::ParameterList("Free Surface"));
+static void buildValidFreeSurfaceParameters(const ValidList& valid) {
   valid->set("Type", "Free Surface", "a traction-free boundary that becomes a streamline (docs/theory.md §3)");
   valid->set("Start Group", "",
              "the boundary group that shares the surface's fixed start (the die wall at a die exit)");
@@ -72,7 +64,10 @@ Teuchos::RCP<const Teuchos::ParameterList> validFreeSurfaceParameters() {
       "a jet, a die land); Arc Length: every segment keeps its length and turns with the flow (a surface that "
       "turns, e.g. a chip's back); docs/theory.md §3.2",
       Teuchos::tuple<std::string>("Spines", "Arc Length"), valid.get());
-  return valid;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> validFreeSurfaceParameters() {
+  return validListOnce<buildValidFreeSurfaceParameters>("Free Surface");
 }
 
 FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mesh,
@@ -162,7 +157,7 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
     std::vector<GO> nodes = orderedFrom(mesh, wall.curve(), wall.upstreamGroup(), where);
     Surface s = make(wall.name(), nodes, where, false);
     s.wall = static_cast<int>(w);
-    const bool reversed = nodes.front() != wall.curve().nodes.front();
+    const bool reversed = !wall.firstNodeIsUpstream();  // orderedFrom ran from the same end
     for (int k = 0; k < wall.numNodes(); ++k) s.wallIndex.push_back(reversed ? wall.numNodes() - 1 - k : k);
     m_surfaces.push_back(std::move(s));
   }

@@ -13,13 +13,11 @@
 #include "flowform/core/Log.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
 #include "flowform/solvers/AndersonAcceleration.hpp"
+#include "flowform/core/ValidList.hpp"
 
 namespace flowform {
 
-Teuchos::RCP<const Teuchos::ParameterList> FreeSurfaceLoop::validParameters() {
-  static Teuchos::RCP<Teuchos::ParameterList> valid;
-  if (!valid.is_null()) return valid;
-  valid = Teuchos::rcp(new Teuchos::ParameterList("Free Surface"));
+static void buildValidParameters(const ValidList& valid) {
   valid->set("Maximum Iterations", 30, "surface updates at most; then the run is not converged (exit 3)",
              intInRange(0, 10000));
   valid->set("Flow Angle Tolerance", 1e-4,
@@ -38,7 +36,10 @@ Teuchos::RCP<const Teuchos::ParameterList> FreeSurfaceLoop::validParameters() {
   valid->set("Move Tolerance", 1e-4,
              "and when the largest node move of the next update is below this fraction of the surface's length",
              inRange(1e-14, 1.0));
-  return valid;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> FreeSurfaceLoop::validParameters() {
+  return validListOnce<buildValidParameters>("Free Surface");
 }
 
 void FreeSurfaceReport::report(nlohmann::json& summary) const {

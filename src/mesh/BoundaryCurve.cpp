@@ -158,4 +158,14 @@ BoundaryCurve buildBoundaryCurve(const Mesh& mesh, const BoundaryGroup& group) {
   return curve;
 }
 
+CurveEnds endsOn(const BoundaryCurve& curve, const BoundaryGroup& group) {
+  CurveEnds ends;
+  for (const auto& e : group.edges)
+    for (GO node : e) {
+      ends.first = ends.first || node == curve.nodes.front();
+      ends.last = ends.last || node == curve.nodes.back();
+    }
+  return ends;
+}
+
 }  // namespace flowform

@@ -11,6 +11,7 @@
 #include "flowform/core/NumberRange.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/core/Strings.hpp"
+#include "flowform/core/ValidList.hpp"
 
 namespace flowform {
 
@@ -21,10 +22,7 @@ const char* const kFieldEntries[] = {"velocity_field", "pressure_field"};
 
 }  // namespace
 
-Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
-  static Teuchos::RCP<Teuchos::ParameterList> valid;
-  if (!valid.is_null()) return valid;
-  valid = Teuchos::rcp(new Teuchos::ParameterList("Sensitivity"));
+static void buildValidParameters(const ValidList& valid) {
   valid->set("Parameters", Teuchos::Array<std::string>(),
              "parameters h to differentiate by: Friction Coefficient (every wall's ν), Friction Coefficient:<wall>, "
              "Shear Factor, Shear Factor:<wall>, Yield Stress, Rate Constant, Rate Exponent; none: no sensitivity work");
@@ -50,7 +48,10 @@ Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
       "two assemblies per surface node, docs/theory.md §3.5) or Frozen (the DDM on the converged shape only); "
       "no effect without free surfaces",
       Teuchos::tuple<std::string>("Total", "Frozen"), valid.get());
-  return valid;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
+  return validListOnce<buildValidParameters>("Sensitivity");
 }
 
 Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls,

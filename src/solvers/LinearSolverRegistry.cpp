@@ -6,6 +6,7 @@
 #include "flowform/solvers/Klu2Amd.hpp"
 #include "flowform/solvers/Klu2NestedDissection.hpp"
 #include "flowform/solvers/Mumps.hpp"
+#include "flowform/core/ValidList.hpp"
 
 namespace flowform {
 
@@ -51,10 +52,7 @@ const std::vector<LinearSolverType>& linearSolverTypes() {
   return types;
 }
 
-Teuchos::RCP<const Teuchos::ParameterList> validLinearSolverParameters() {
-  static Teuchos::RCP<Teuchos::ParameterList> valid;
-  if (!valid.is_null()) return valid;
-  valid = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
+static void buildValidLinearSolverParameters(const ValidList& valid) {
   Teuchos::Array<std::string> names;
   std::string doc = "the direct solver:";
   for (const LinearSolverType& t : linearSolverTypes()) {
@@ -64,7 +62,10 @@ Teuchos::RCP<const Teuchos::ParameterList> validLinearSolverParameters() {
   Teuchos::setStringToIntegralParameter<int>("Type", names[0], doc, names(), valid.get());
   // Types may share an entry (Ordering): declaring it again sets the same.
   for (const LinearSolverType& t : linearSolverTypes()) t.declareParameters(*valid);
-  return valid;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> validLinearSolverParameters() {
+  return validListOnce<buildValidLinearSolverParameters>("Linear Solver");
 }
 
 std::unique_ptr<LinearSolver> createLinearSolver(const Teuchos::ParameterList& list, const Comm& comm) {

@@ -20,6 +20,7 @@
 #include "flowform/solvers/FlowGroup.hpp"
 #include "flowform/solvers/NewtonStatusTests.hpp"
 #include "flowform/solvers/LinearSolverRegistry.hpp"
+#include "flowform/core/ValidList.hpp"
 
 namespace flowform {
 
@@ -54,10 +55,7 @@ void SolveReport::report(nlohmann::json& summary) const {
   summary["solves"] = {{"newton_iterations", newtonPerSolve}, {"restarts", restarts}};
 }
 
-Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
-  static Teuchos::RCP<Teuchos::ParameterList> valid;
-  if (!valid.is_null()) return valid;
-  valid = Teuchos::rcp(new Teuchos::ParameterList("Solver"));
+static void buildValidParameters(const ValidList& valid) {
   valid->set("Max Newton Iterations", 40, "Newton iterations per continuation stage", intInRange(1, 10000));
   // Converged when ||F|| <= max(absolute, relative ||F_0||): either may be 0 (not used), and a
   // relative tolerance of 1 or more would call the start converged.
@@ -91,7 +89,10 @@ Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
            inRange(1e-12, 1.0));
   cont.set("Growth Factor", 2.0, "step growth after a stage that took at most 5 Newton iterations",
            inRange(1.0, 100.0));
-  return valid;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> NonlinearSolver::validParameters() {
+  return validListOnce<buildValidParameters>("Solver");
 }
 
 NonlinearSolver::NonlinearSolver(FlowModel& model, const Teuchos::ParameterList& params)

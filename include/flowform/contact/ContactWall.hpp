@@ -87,6 +87,11 @@ class ContactWall {
   /// and the group at the wall's upstream end (Start Group).
   bool releasedFreeSurface() const { return m_settings.releasedFreeSurface; }
   const std::string& upstreamGroup() const { return m_settings.upstreamGroup; }
+  /// Whether the wall's first node is its upstream end: the end it shares with its Start Group;
+  /// true without one (the one answer for walls, their responses and their free surfaces).
+  bool firstNodeIsUpstream() const { return m_firstIsUpstream; }
+  /// The wall node at its downstream end (away from its Start Group).
+  int downstreamEnd() const { return m_firstIsUpstream ? numNodes() - 1 : 0; }
   /// Distance of node k from the tool (the wall as made) along the tool's normal: 0 unless a
   /// free-surface update moved the node off it. A node off the tool is never activated.
   double gap(int k) const {
@@ -258,6 +263,7 @@ class ContactWall {
   std::vector<char> m_active;  ///< kFree, kActive or kSelfDeciding per node
   std::vector<int> m_changes;
   std::vector<std::vector<std::array<double, 2>>> m_cornerNormals;
+  bool m_firstIsUpstream = true;  ///< firstNodeIsUpstream()
   int m_upstreamEnd = -1;  ///< Released Nodes = Free Surface: the wall node shared with the Start Group
   std::vector<double> m_viscosity, m_flowStress;
   std::vector<std::array<double, 2>> m_coords;

@@ -47,6 +47,9 @@ class DofMap {
   const std::vector<GO>& overlapNodes() const { return m_overlapNodes; }
   /// Nodes owned by this rank are overlap-local indices 0 .. numOwnedNodes()-1.
   LO numOwnedNodes() const { return m_numOwnedNodes; }
+  /// Whether overlap node `n` (−1: not on this rank) is owned by this rank: the one test of
+  /// "each node once, by its owner".
+  bool ownsNode(LO n) const { return n >= 0 && n < m_numOwnedNodes; }
   /// Overlap-local index of mesh node `node`, or -1 when it is not on this rank.
   LO overlapIndex(GO node) const { return m_overlapIndexOfNode[node]; }
 

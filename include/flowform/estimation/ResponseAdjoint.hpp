@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "flowform/assembly/Responses.hpp"
+#include "flowform/responses/Responses.hpp"
 #include "flowform/solvers/FlowModel.hpp"
 
 namespace flowform {

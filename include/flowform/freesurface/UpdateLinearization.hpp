@@ -19,7 +19,7 @@
 
 #include <Teuchos_SerialDenseMatrix.hpp>
 
-#include "flowform/assembly/Responses.hpp"
+#include "flowform/responses/Responses.hpp"
 #include "flowform/core/TpetraTypes.hpp"
 #include "flowform/freesurface/FreeSurface.hpp"
 #include "flowform/solvers/FlowModel.hpp"

@@ -35,4 +35,11 @@ struct BoundaryCurve {
 /// on the mesh boundary.
 BoundaryCurve buildBoundaryCurve(const Mesh& mesh, const BoundaryGroup& group);
 
+/// Which ends of `curve` are nodes of `group`'s edges. A contact wall's or a free surface's
+/// upstream end is the one it shares with its Start Group.
+struct CurveEnds {
+  bool first = false, last = false;
+};
+CurveEnds endsOn(const BoundaryCurve& curve, const BoundaryGroup& group);
+
 }  // namespace flowform

@@ -23,7 +23,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "flowform/assembly/Assembler.hpp"
-#include "flowform/assembly/Responses.hpp"
+#include "flowform/responses/Responses.hpp"
 #include "flowform/bc/BoundaryConditions.hpp"
 #include "flowform/contact/ContactWall.hpp"
 #include "flowform/discretization/DofMap.hpp"

@@ -31,7 +31,7 @@
 #include "flowform/discretization/DofMap.hpp"
 #include "flowform/solvers/FlowModel.hpp"
 #include "flowform/mesh/Mesh.hpp"
-#include "flowform/assembly/Responses.hpp"
+#include "flowform/responses/Responses.hpp"
 #include "flowform/assembly/SensitivityParameter.hpp"
 #include "flowform/contact/ContactWall.hpp"
 

@@ -1,0 +1,75 @@
+// The registry of responses: the one list a new response type is added to. Adding one is one
+// file beside this one (a struct like BoundaryForce: its name, description, traits, the
+// parameters it reads with their validators and doc strings, and its evaluation templated on
+// the scalar type) and one entry in RegisteredResponses below. The response sublist's valid
+// parameters, the "Type" choices and their --help text, the wall and boundary checks, the
+// adaptivity targets and which responses get a derivative all follow from the list.
+//
+// Traits of a type:
+//   kNeedsBoundary    its "Boundary" must be a boundary group of the mesh
+//   kNeedsWall        its "Boundary" must be a Contact Wall
+//   kReactionBased    it sums the reactions R_unc(x) (the unconstrained momentum residual)
+//   kAdaptivityTarget it is linear in the reactions, φ = c·R_unc(x), and gives c
+//                     (reactionWeights): its adjoint gives the adaptive loop's indicators
+//   kDifferentiable   it has a derivative (evaluate<TangentFad>); false for the piecewise
+//                     constant ones (Dead Zone, Contact Length), which have evaluate(double) only
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "flowform/responses/BoundaryExtent.hpp"
+#include "flowform/responses/BoundaryForce.hpp"
+#include "flowform/responses/BoundaryPower.hpp"
+#include "flowform/responses/CellPowers.hpp"
+#include "flowform/responses/ContactLength.hpp"
+#include "flowform/responses/FlowRate.hpp"
+#include "flowform/responses/MeanPressure.hpp"
+#include "flowform/responses/ShearAngle.hpp"
+#include "flowform/responses/ThicknessRatio.hpp"
+#include "flowform/responses/WallGap.hpp"
+#include "flowform/responses/WallPowers.hpp"
+
+namespace flowform {
+
+template <typename... Types>
+struct ResponseList {};
+
+/// The first is the default of "Type".
+using RegisteredResponses =
+    ResponseList<BoundaryForce, MeanPressure, BoundaryPower, FlowRate, PlasticPower, FrictionPower, PenaltyPower,
+                 StabilizationPower, DeadZone, BoundaryExtent, WallGap, ContactLength, WallForce, ThicknessRatio,
+                 ShearAngle>;
+
+/// A type's static facts, by its index in RegisteredResponses.
+struct ResponseTypeInfo {
+  std::string name, description;
+  bool needsBoundary, needsWall, reactionBased, adaptivityTarget, differentiable;
+};
+const std::vector<ResponseTypeInfo>& responseTypes();
+/// Index of the type called `name`, −1 when there is none.
+int responseTypeIndex(const std::string& name);
+/// The names of the types with `trait` (a member of ResponseTypeInfo), joined by `separator`.
+std::string responseTypeNames(bool ResponseTypeInfo::*trait, const std::string& separator);
+
+/// The entries of one response sublist: "Type" (the registered names, each with its description)
+/// and the union of the types' parameters (an entry several types read documents each one's use).
+Teuchos::RCP<const Teuchos::ParameterList> validResponseParameters();
+
+/// One response of a case: a registered type with its parameters read.
+class ResponseFunction {
+ public:
+  virtual ~ResponseFunction() = default;
+  virtual double value(const ResponseContext<double>& c) const = 0;
+  /// The value and directional derivative; only for a differentiable type.
+  virtual TangentFad derivative(const ResponseContext<TangentFad>& c) const = 0;
+  /// φ = c·R_unc(x): writes c (owned map, zeroed first) and returns true for an adaptivity
+  /// target; false (c untouched) for the others.
+  virtual bool reactionWeights(const Mesh& mesh, const DofMap& dofMap, Geometry geometry, Vector& c) const = 0;
+};
+
+/// The response of type `type` (an index of responseTypes()) from its validated sublist.
+std::shared_ptr<const ResponseFunction> makeResponse(int type, const Teuchos::ParameterList& validated);
+
+}  // namespace flowform

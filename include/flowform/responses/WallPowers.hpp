@@ -1,0 +1,112 @@
+// The responses summed node by node over the contact walls (each node by its owner), from the
+// wall's part of the momentum residual R_k = α_n (u·n) n + g t (normal penalty and friction):
+//   Wall Force      Σ R_k on the named wall (component X or Y): the force the material exerts on
+//                   it, a tool's cutting (X) and thrust (Y) forces; by the balance of the whole
+//                   body, the sum of the Boundary Forces on the velocity-driven groups when the
+//                   rest is traction-free
+//   Friction Power  Σ g_k u_t,k over the active nodes of every wall: the friction dissipation
+//   Penalty Power   Σ (normal part of R_k)·u = α_n (u·n)²: the work of the normal penalty
+#pragma once
+
+#include "flowform/responses/ResponseContext.hpp"
+
+namespace flowform {
+
+/// Σ over the owned nodes of the walls (only wall `only` when not empty) of add(local, wall, k, fp,
+/// u, p, R_k): u the node's velocity, p the pressures of the node's wall stencil.
+template <typename Scalar, typename Add>
+Scalar sumOverWallNodes(const ResponseContext<Scalar>& c, const std::string& only, Add&& add) {
+  const DofMap& dofMap = c.dofMap;
+  Scalar local = 0.0;
+  for (size_t w = 0; w < c.walls.size(); ++w) {
+    const ContactWall& wall = c.walls[w];
+    if (!only.empty() && wall.name() != only) continue;
+    const FrictionParameters<Scalar> fp = frictionFor<Scalar>(wall, static_cast<int>(w), c.h);
+    for (int k = 0; k < wall.numNodes(); ++k) {
+      const LO n = dofMap.overlapIndex(wall.curve().nodes[k]);
+      if (!dofMap.ownsNode(n)) continue;
+      auto pressure = [&](int j) {
+        return j < 0 ? Scalar(0.0) : c.at(c.x, dofMap.dof(dofMap.overlapIndex(wall.curve().nodes[j]), kP));
+      };
+      const Scalar u[2] = {c.u(c.x, n, kUx), c.u(c.x, n, kUy)};
+      const Scalar p[3] = {pressure(wall.previous(k)), c.u(c.x, n, kP), pressure(wall.next(k))};
+      Scalar Rk[2] = {0.0, 0.0};
+      wall.addNodeResidual(k, fp, u, p, Rk);
+      add(local, wall, k, fp, u, p, Rk);
+    }
+  }
+  return sumOverRanks(*dofMap.comm(), local);
+}
+
+struct WallForce {
+  static constexpr const char* kName = "Wall Force";
+  static constexpr const char* kDescription =
+      "the force the material exerts on a contact wall (Component X or Y): the wall's part of the momentum residual "
+      "(a tool's cutting and thrust forces)";
+  static constexpr bool kNeedsBoundary = true, kNeedsWall = true, kReactionBased = false, kAdaptivityTarget = false,
+                        kDifferentiable = true;
+
+  static void declareParameters(Teuchos::ParameterList& list) {
+    declareBoundary(list, "the contact wall");
+    declareComponent(list, "the force component");
+  }
+  explicit WallForce(const Teuchos::ParameterList& p)
+      : m_wall(p.get<std::string>("Boundary")), m_component(componentIndex(p)) {}
+
+  template <typename Scalar>
+  Scalar evaluate(const ResponseContext<Scalar>& c) const {
+    return sumOverWallNodes(c, m_wall, [&](Scalar& local, const ContactWall&, int, const FrictionParameters<Scalar>&,
+                                           const Scalar*, const Scalar*, const Scalar* Rk) {
+      local += m_component == 0 ? Rk[0] : Rk[1];
+    });
+  }
+
+ private:
+  std::string m_wall;
+  int m_component;
+};
+
+struct FrictionPower {
+  static constexpr const char* kName = "Friction Power";
+  static constexpr const char* kDescription = "sum over active wall nodes of g_k u_t,k: the friction dissipation";
+  static constexpr bool kNeedsBoundary = false, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
+                        kDifferentiable = true;
+
+  static void declareParameters(Teuchos::ParameterList&) {}
+  explicit FrictionPower(const Teuchos::ParameterList&) {}
+
+  template <typename Scalar>
+  Scalar evaluate(const ResponseContext<Scalar>& c) const {
+    return sumOverWallNodes(c, "", [&](Scalar& local, const ContactWall& wall, int k,
+                                       const FrictionParameters<Scalar>& fp, const Scalar* u, const Scalar* p,
+                                       const Scalar*) {
+      const auto& nk = wall.curve().normals[k];
+      const Scalar g = wall.tangentialForce(k, fp, u, p);
+      local += g * (-nk[1] * u[0] + nk[0] * u[1]);
+    });
+  }
+};
+
+struct PenaltyPower {
+  static constexpr const char* kName = "Penalty Power";
+  static constexpr const char* kDescription =
+      "sum over active wall nodes of alpha_n (u.n)^2: the work of the normal penalty";
+  static constexpr bool kNeedsBoundary = false, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
+                        kDifferentiable = true;
+
+  static void declareParameters(Teuchos::ParameterList&) {}
+  explicit PenaltyPower(const Teuchos::ParameterList&) {}
+
+  template <typename Scalar>
+  Scalar evaluate(const ResponseContext<Scalar>& c) const {
+    return sumOverWallNodes(c, "", [&](Scalar& local, const ContactWall& wall, int k,
+                                       const FrictionParameters<Scalar>& fp, const Scalar* u, const Scalar* p,
+                                       const Scalar* Rk) {
+      const auto& nk = wall.curve().normals[k];
+      const Scalar g = wall.tangentialForce(k, fp, u, p);
+      local += (Rk[0] + g * nk[1]) * u[0] + (Rk[1] - g * nk[0]) * u[1];
+    });
+  }
+};
+
+}  // namespace flowform

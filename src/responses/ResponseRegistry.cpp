@@ -1,0 +1,132 @@
+#include "flowform/responses/ResponseRegistry.hpp"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "flowform/core/ValidList.hpp"
+
+namespace flowform {
+
+namespace {
+
+template <typename T>
+class RegisteredResponse final : public ResponseFunction {
+ public:
+  explicit RegisteredResponse(const Teuchos::ParameterList& p) : m_response(p) {}
+  double value(const ResponseContext<double>& c) const override { return m_response.evaluate(c); }
+  TangentFad derivative(const ResponseContext<TangentFad>& c) const override {
+    if constexpr (T::kDifferentiable) return m_response.evaluate(c);
+    else throw std::logic_error(std::string(T::kName) + " has no derivative");
+  }
+  bool reactionWeights(const Mesh& mesh, const DofMap& dofMap, Geometry geometry, Vector& c) const override {
+    if constexpr (T::kAdaptivityTarget) {
+      c.putScalar(0.0);
+      auto view = c.getLocalViewHost(Tpetra::Access::ReadWrite);
+      m_response.reactionWeights(mesh, dofMap, geometry, view);
+      return true;
+    } else {
+      return false;
+    }
+  }
+
+ private:
+  T m_response;
+};
+
+template <typename... Types>
+std::vector<ResponseTypeInfo> collect(ResponseList<Types...>) {
+  return {ResponseTypeInfo{Types::kName, Types::kDescription, Types::kNeedsBoundary, Types::kNeedsWall,
+                           Types::kReactionBased, Types::kAdaptivityTarget, Types::kDifferentiable}...};
+}
+
+using Declare = void (*)(Teuchos::ParameterList&);
+template <typename... Types>
+std::vector<Declare> declarations(ResponseList<Types...>) {
+  return {&Types::declareParameters...};
+}
+
+using Make = std::shared_ptr<const ResponseFunction> (*)(const Teuchos::ParameterList&);
+template <typename T>
+std::shared_ptr<const ResponseFunction> make(const Teuchos::ParameterList& p) {
+  return std::make_shared<RegisteredResponse<T>>(p);
+}
+template <typename... Types>
+std::vector<Make> makers(ResponseList<Types...>) {
+  return {&make<Types>...};
+}
+
+}  // namespace
+
+const std::vector<ResponseTypeInfo>& responseTypes() {
+  static const std::vector<ResponseTypeInfo> types = collect(RegisteredResponses{});
+  return types;
+}
+
+int responseTypeIndex(const std::string& name) {
+  const auto& types = responseTypes();
+  for (size_t i = 0; i < types.size(); ++i)
+    if (types[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+std::string responseTypeNames(bool ResponseTypeInfo::*trait, const std::string& separator) {
+  std::string names;
+  for (const ResponseTypeInfo& t : responseTypes())
+    if (t.*trait) names += (names.empty() ? "" : separator) + t.name;
+  return names;
+}
+
+namespace {
+
+void buildValidResponseParameters(const ValidList& list) {
+  Teuchos::ParameterList& valid = *list;
+  const auto& types = responseTypes();
+  Teuchos::Array<std::string> names, docs;
+  Teuchos::Array<int> indices;
+  for (const ResponseTypeInfo& t : types) {
+    indices.push_back(static_cast<int>(names.size()));
+    names.push_back(t.name);
+    docs.push_back(t.description);
+  }
+  Teuchos::setStringToIntegralParameter<int>(
+      "Type", types.front().name, "what to compute (include/flowform/responses/, one file per type)", names(),
+      docs(), indices(), &valid);
+  // The union of the types' entries, in the order first declared; each entry's doc says
+  // which types read it and how ("Boundary Force, Mean Pressure: the group the tool acts on; ...").
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> uses;  // entry -> (doc, types)
+  const std::vector<Declare> declare = declarations(RegisteredResponses{});
+  for (size_t i = 0; i < declare.size(); ++i) {
+    Teuchos::ParameterList own;
+    declare[i](own);
+    for (auto it = own.begin(); it != own.end(); ++it) {
+      const std::string& name = own.name(it);
+      if (!valid.isParameter(name)) valid.setEntry(name, own.entry(it));
+      auto& docs = uses[name];
+      const std::string& doc = own.entry(it).docString();
+      const auto same = std::find_if(docs.begin(), docs.end(), [&](const auto& d) { return d.first == doc; });
+      if (same == docs.end()) docs.push_back({doc, types[i].name});
+      else same->second += ", " + types[i].name;
+    }
+  }
+  for (const auto& [name, docs] : uses) {
+    std::string text;
+    for (const auto& [doc, users] : docs) text += (text.empty() ? "" : "; ") + users + ": " + doc;
+    valid.getEntryRCP(name)->setDocString(text);
+  }
+}
+
+}  // namespace
+
+Teuchos::RCP<const Teuchos::ParameterList> validResponseParameters() {
+  return validListOnce<buildValidResponseParameters>("Response");
+}
+
+std::shared_ptr<const ResponseFunction> makeResponse(int type, const Teuchos::ParameterList& validated) {
+  static const std::vector<Make> make = makers(RegisteredResponses{});
+  return make.at(static_cast<size_t>(type))(validated);
+}
+
+}  // namespace flowform

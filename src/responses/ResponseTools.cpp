@@ -1,0 +1,113 @@
+#include "flowform/responses/ResponseContext.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/NumberRange.hpp"
+#include "flowform/discretization/CellGeometry.hpp"
+#include "flowform/discretization/ElementLayout.hpp"
+#include "flowform/physics/FlowResidual.hpp"
+#include "flowform/responses/CellPowers.hpp"
+#include "flowform/responses/ShearAngle.hpp"
+
+namespace flowform {
+
+double sumOverRanks(const Comm& comm, double local) {
+  double global = 0.0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return global;
+}
+
+TangentFad sumOverRanks(const Comm& comm, const TangentFad& local) {
+  return dual<TangentFad>(sumOverRanks(comm, local.val()), sumOverRanks(comm, local.dx(0)));
+}
+
+double curveArea(const Mesh& mesh, const BoundaryCurve& curve, Geometry geometry) {
+  double area = 0.0;
+  for (size_t s = 0; s < curve.segmentLength.size(); ++s) {
+    const auto& a = mesh.coords[curve.nodes[s]];
+    const auto& b = mesh.coords[curve.nodes[(s + 1) % curve.nodes.size()]];
+    area += curve.segmentLength[s] * (geometry == Geometry::Axisymmetric ? M_PI * (a[0] + b[0]) : 1.0);
+  }
+  return area;
+}
+
+const ContactWall& wallNamed(const std::vector<ContactWall>& walls, const std::string& name) {
+  const auto wall = std::find_if(walls.begin(), walls.end(), [&](const ContactWall& w) { return w.name() == name; });
+  if (wall == walls.end()) throw InputError("'" + name + "' is not a Contact Wall");
+  return *wall;
+}
+
+template <typename Scalar>
+void cellIntegrals(const Workset& x, const Mesh& mesh, const DofMap& dofMap, const FlowPhysics& physics,
+                   const MaterialParameters<Scalar>& material, double deadSpeed, Scalar& plasticPower,
+                   Scalar& stabilizationPower, double& deadArea) {
+  const int npc = dofMap.nodesPerCell();
+  const Geometry geometry = physics.kernel.geometry;
+  CellGeometry g;  // the kernel's own rule, so that the powers match the discrete equations exactly
+  LO dofs[kNumFields * kMaxNodesPerCell];
+  Scalar values[kNumFields * kMaxNodesPerCell];
+  plasticPower = stabilizationPower = 0.0;
+  deadArea = 0.0;
+  for (size_t k = 0; k < dofMap.cells().size(); ++k) {
+    computeCellGeometry(mesh, dofMap.cells()[k], geometry, g);
+    dofMap.cellDofs(k, dofs);
+    gather(x, dofs, EqualOrderLayout::numDofs(npc), values);
+    const Scalar tau =
+        stabilizationTau(physics.kernel.beta, g.diameter, centroidViscosity(g.centroid, geometry, material, values));
+    for (int q = 0; q < g.rule.numPoints; ++q) {
+      const auto d = strainRateAt(g.rule, q, geometry, values);
+      const Scalar mu = viscosity(regularizedStrainRate(d.ddot(), material), material);
+      const double w = measureWeight(g.rule, q, geometry);
+      plasticPower += w * 2.0 * mu * d.ddot();
+      Scalar px = 0.0, py = 0.0;
+      for (int a = 0; a < npc; ++a) {
+        px += g.rule.dNdx[q][a] * values[EqualOrderLayout::index(a, kP)];
+        py += g.rule.dNdy[q][a] * values[EqualOrderLayout::index(a, kP)];
+      }
+      stabilizationPower += w * tau * (px * (px - physics.kernel.bodyForce[0]) + py * (py - physics.kernel.bodyForce[1]));
+    }
+    double ux = 0.0, uy = 0.0;
+    for (int a = 0; a < npc; ++a) {
+      ux += g.centroid.N[0][a] * x.x(dofs[EqualOrderLayout::index(a, kUx)], 0);  // values only
+      uy += g.centroid.N[0][a] * x.x(dofs[EqualOrderLayout::index(a, kUy)], 0);
+    }
+    if (std::hypot(ux, uy) < deadSpeed) {
+      for (int q = 0; q < g.rule.numPoints; ++q) deadArea += measureWeight(g.rule, q, geometry);
+    }
+  }
+}
+
+template void cellIntegrals<double>(const Workset&, const Mesh&, const DofMap&, const FlowPhysics&,
+                                    const MaterialParameters<double>&, double, double&, double&, double&);
+template void cellIntegrals<TangentFad>(const Workset&, const Mesh&, const DofMap&, const FlowPhysics&,
+                                        const MaterialParameters<TangentFad>&, double, TangentFad&, TangentFad&,
+                                        double&);
+
+void declareBoundary(Teuchos::ParameterList& list, const std::string& doc) { list.set("Boundary", "", doc); }
+
+void declareComponent(Teuchos::ParameterList& list, const std::string& doc) {
+  Teuchos::setStringToIntegralParameter<int>("Component", "X", doc, Teuchos::tuple<std::string>("X", "Y"), &list);
+}
+
+void declareReferenceThickness(Teuchos::ParameterList& list) {
+  list.set("Reference Thickness", 1.0,
+           "the thickness t the stream had upstream (cutting: the uncut thickness) [length]", positive());
+}
+
+void ShearAngle::declareParameters(Teuchos::ParameterList& list) {
+  ThicknessRatio::declareParameters(list);
+  list.set("Rake Angle", 0.0, "the tool's rake angle α [degrees]", inRange(-89.0, 89.0));
+}
+
+void DeadZone::declareParameters(Teuchos::ParameterList& list) {
+  list.set("Fraction", 0.01, "|u| below this fraction of the reference speed (0 would count no cell)",
+           inRange(0.0, 1.0, true, false));
+  list.set("Reference Speed", 1.0, "the process speed (e.g. the ram's) [velocity]", positive());
+}
+
+}  // namespace flowform
