@@ -72,7 +72,8 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   m_responses->checkWalls(m_walls);
   // Only a case with a Sensitivity sublist gets one: none means no work.
   m_sensitivity = std::make_unique<Sensitivity>(
-      m_params.isSublist("Sensitivity") ? &m_params.sublist("Sensitivity") : nullptr, m_walls, *m_responses);
+      m_params.isSublist("Sensitivity") ? &m_params.sublist("Sensitivity") : nullptr, m_walls, *m_responses,
+      m_physics.material.law);
 
   m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings);
   m_bcs = std::make_unique<BoundaryConditions>(bcList, m_mesh, *m_dofMap);
