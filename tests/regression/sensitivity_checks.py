@@ -22,7 +22,7 @@ subcommands
               docs/theory.md §1): du/dh and dp/dh for h = Q, T, α, A, n by DDM vs the built-in
               central differences < 1e-5 (relative steps of --step; the test passes 5e-5); one
               factorization for the five; Q and T enter only through Q/T, so T |du/dT| = Q |du/dQ|
-              (1e-10). Q and T move ln Z by (Q/(R T)) δ = 24.9 δ, so their truncation is ~600× that of
+              (1e-8). Q and T move ln Z by (Q/(R T)) δ = 24.9 δ, so their truncation is ~600× that of
               a step δ in the other parameters: measured 4.1e-6 (Q, velocity) at δ = 2e-4, hence
               5e-5 (~2.6e-7 by δ², the others ≤ 2e-7; the solver error grows 4× to ≲ 1e-9).
   no-work     the channel without a Sensitivity list, with one (DDM only), and with an empty
@@ -190,7 +190,10 @@ def sellars_tegart(args, c):
                     f"{field} d/d{p}: |DDM| {e['ddm']:.6g}, |FD| {e['fd']:.6g}, rel. difference {e['rel_diff']:.3e} < {TOL}")
         q, t = s["parameters"]["Material"]["Activation Energy"], s["parameters"]["Material"]["Temperature"]
         dq, dt = s["fd_check"][field]["Activation Energy"]["ddm"], s["fd_check"][field]["Temperature"]["ddm"]
-        c.check(abs(t * dt - q * dq) <= 1e-10 * q * dq, f"{field}: T |d/dT| = {t * dt:.12g} = Q |d/dQ| = {q * dq:.12g}")
+        # Exact in exact arithmetic (∂R/∂T = −(Q/T) ∂R/∂Q, one factorization); the back-substitution's
+        # round-off is relative to the whole vector, of which dp/dh is ~1e-3: measured 3.6e-10 (p),
+        # 1e-12 (u). 1e-8; a wrong factor (R, T², the sign) is O(1).
+        c.check(abs(t * dt - q * dq) <= 1e-8 * q * dq, f"{field}: T |d/dT| = {t * dt:.12g} = Q |d/dQ| = {q * dq:.12g}")
     names = set(h5io.field_names(out))
     want = {f"d{v}_d{sym}" for v in "up" for sym in ST_PARAMETERS.values()}
     c.check(want <= names, f"solution.h5 has {sorted(want)}")
