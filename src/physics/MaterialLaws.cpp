@@ -47,6 +47,29 @@ Teuchos::RCP<const Teuchos::ParameterEntryValidator> validatorOf(MaterialParamet
   return finiteNumber();
 }
 
+/// InputError for an entry of `material` that is a parameter of another law than `law` (the
+/// validation would call it unknown and list the valid names, without saying why).
+void checkOwnParameters(const Teuchos::ParameterList& material, int law) {
+  const auto& laws = materialLaws();
+  auto declares = [&](int l, const std::string& name) {
+    for (const MaterialParameterInfo& p : laws[l].parameters)
+      if (name == p.name) return true;
+    return false;
+  };
+  for (auto it = material.begin(); it != material.end(); ++it) {
+    const std::string& name = material.name(it);
+    if (declares(law, name)) continue;
+    for (size_t other = 0; other < laws.size(); ++other)
+      if (declares(static_cast<int>(other), name)) {
+        std::string own;
+        for (const MaterialParameterInfo& p : laws[law].parameters) own += ", '" + std::string(p.name) + "'";
+        throw InputError("Material/" + name + " is a parameter of material law '" + laws[other].name +
+                         "', but the case's Material/Law is '" + laws[law].name + "'; its parameters: 'Law'" + own +
+                         ", 'Strain Rate Cutoff'");
+      }
+  }
+}
+
 }  // namespace
 
 const std::vector<MaterialLawInfo>& materialLaws() {
@@ -91,12 +114,16 @@ Teuchos::RCP<const Teuchos::ParameterList> validMaterialParameters(int law) {
 }
 
 int materialLawOf(const Teuchos::ParameterList& material) {
-  if (!material.isParameter("Law")) return 0;
+  if (!material.isParameter("Law")) {
+    checkOwnParameters(material, 0);
+    return 0;
+  }
   if (!material.isType<std::string>("Law"))
     throw InputError("Material/Law must be of type string, one of " + materialLawNames());
   const std::string name = material.get<std::string>("Law");
   const int law = materialLawIndex(name);
   if (law < 0) throw InputError("Material/Law: '" + name + "' is not a material law; allowed: " + materialLawNames());
+  checkOwnParameters(material, law);
   return law;
 }
 

@@ -172,6 +172,14 @@ TEUCHOS_UNIT_TEST(MaterialLaws, Registry) {
   Teuchos::ParameterList mixed(material);
   mixed.set("Yield Stress", 1.0);
   TEST_THROW(mixed.validateParameters(*flowform::validMaterialParameters(kLaw)), std::exception);
+  // ... and materialLawOf says whose parameter it is.
+  try {
+    flowform::materialLawOf(mixed);
+    TEST_ASSERT(false);
+  } catch (const flowform::InputError& e) {
+    const std::string what = e.what();
+    TEST_ASSERT(what.find("Material/Yield Stress is a parameter of material law 'Power Law'") != std::string::npos);
+  }
   // An unknown law: InputError naming the registered ones.
   Teuchos::ParameterList unknown("Material");
   unknown.set("Law", std::string("Johnson-Cook"));

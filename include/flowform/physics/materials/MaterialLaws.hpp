@@ -39,7 +39,8 @@ std::string materialLawNames();
 /// Strain Rate Cutoff.
 Teuchos::RCP<const Teuchos::ParameterList> validMaterialParameters(int law);
 /// The law a Material sublist names (the default when it names none); InputError naming the
-/// registered laws for an unknown name or a Law that is not a string.
+/// registered laws for an unknown name or a Law that is not a string, and naming the law's
+/// parameters for an entry that is another law's parameter.
 int materialLawOf(const Teuchos::ParameterList& material);
 /// The parameters of a validated Material sublist.
 MaterialParameters<double> materialFromParameters(const Teuchos::ParameterList& material);
