@@ -14,58 +14,75 @@ struct Known {
   const char* symbol;
   ParameterKind kind;
 };
-const Known kKnown[] = {{"Friction Coefficient", "nu", ParameterKind::FrictionCoefficient},
-                        {"Shear Factor", "m", ParameterKind::ShearFactor},
-                        {"Yield Stress", "sigma0", ParameterKind::YieldStress},
-                        {"Rate Constant", "gamma", ParameterKind::RateConstant},
-                        {"Rate Exponent", "n", ParameterKind::RateExponent}};
+const Known kFriction[] = {{"Friction Coefficient", "nu", ParameterKind::FrictionCoefficient},
+                           {"Shear Factor", "m", ParameterKind::ShearFactor}};
 
-std::string allowedNames(const std::vector<ContactWall>& walls) {
+/// The friction parameters (per wall as well), then the sensitivity parameters of law `law`.
+std::string allowedNames(const std::vector<ContactWall>& walls, int law) {
   std::string list;
-  for (const Known& k : kKnown) {
+  for (const Known& k : kFriction) {
     list += std::string(list.empty() ? "" : ", ") + "'" + k.name + "'";
-    const bool friction = k.kind == ParameterKind::FrictionCoefficient || k.kind == ParameterKind::ShearFactor;
-    if (friction)
-      for (const ContactWall& w : walls) list += ", '" + std::string(k.name) + ":" + w.name() + "'";
+    for (const ContactWall& w : walls) list += ", '" + std::string(k.name) + ":" + w.name() + "'";
   }
+  for (const MaterialParameterInfo& p : materialLaws()[law].parameters)
+    if (p.sensitivity) list += ", '" + std::string(p.name) + "'";
   if (walls.empty()) list += " (the friction parameters need contact walls; this case has none)";
   return list;
 }
 
-double& materialEntry(ParameterKind kind, MaterialParameters<double>& m) {
-  return kind == ParameterKind::YieldStress ? m.yieldStress : kind == ParameterKind::RateConstant ? m.rateConstant
-                                                                                                : m.rateExponent;
+/// The law (other than `law`) that has a sensitivity parameter `name`, or "".
+std::string otherLawWith(const std::string& name, int law) {
+  const auto& laws = materialLaws();
+  for (size_t l = 0; l < laws.size(); ++l)
+    for (const MaterialParameterInfo& p : laws[l].parameters)
+      if (static_cast<int>(l) != law && p.sensitivity && name == p.name) return laws[l].name;
+  return "";
 }
 
 }  // namespace
 
-SensitivityParameter parseSensitivityParameter(const std::string& name, const std::vector<ContactWall>& walls) {
+SensitivityParameter parseSensitivityParameter(const std::string& name, const std::vector<ContactWall>& walls,
+                                               int law) {
   const std::string where = "Sensitivity/Parameters: '" + name + "'";
   const size_t colon = name.find(':');
   const std::string base = name.substr(0, colon);
-  const Known* known = nullptr;
-  for (const Known& k : kKnown)
-    if (base == k.name) known = &k;
-  if (!known) throw InputError(where + " is not a parameter; allowed: " + allowedNames(walls));
-
   SensitivityParameter h;
   h.name = name;
-  h.symbol = known->symbol;
-  h.kind = known->kind;
-  if (!h.isFriction()) {
+  const std::vector<MaterialParameterInfo>& own = materialLaws()[law].parameters;
+  for (size_t i = 0; i < own.size(); ++i)
+    if (own[i].sensitivity && base == own[i].name) {
+      h.kind = ParameterKind::Material;
+      h.symbol = own[i].symbol;
+      h.material = static_cast<int>(i);
+      h.relativeStep = own[i].relativeStep;
+    }
+  if (h.material >= 0) {
     if (colon != std::string::npos)
       throw InputError(where + ": '" + base + "' is one value for the whole body, not per wall; allowed: " +
-                       allowedNames(walls));
+                       allowedNames(walls, law));
     return h;
   }
+  const Known* known = nullptr;
+  for (const Known& k : kFriction)
+    if (base == k.name) known = &k;
+  if (!known) {
+    const std::string other = otherLawWith(base, law);
+    if (!other.empty())
+      throw InputError(where + " is a parameter of material law '" + other + "', but the case's Material/Law is '" +
+                       materialLaws()[law].name + "'; allowed: " + allowedNames(walls, law));
+    throw InputError(where + " is not a parameter; allowed: " + allowedNames(walls, law));
+  }
+  h.symbol = known->symbol;
+  h.kind = known->kind;
   if (walls.empty())
     throw InputError(where + " is a friction parameter, but the case has no contact wall; allowed: " +
-                     allowedNames(walls));
+                     allowedNames(walls, law));
   if (colon != std::string::npos) {
     const std::string group = name.substr(colon + 1);
     for (size_t w = 0; w < walls.size(); ++w)
       if (walls[w].name() == group) h.wall = static_cast<int>(w);
-    if (h.wall < 0) throw InputError(where + ": '" + group + "' is not a contact wall; allowed: " + allowedNames(walls));
+    if (h.wall < 0)
+      throw InputError(where + ": '" + group + "' is not a contact wall; allowed: " + allowedNames(walls, law));
     h.symbol += "_" + group;
   }
   bool enters = false;
@@ -77,17 +94,13 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
 }
 
 double SensitivityParameter::finiteDifferenceStep(double s, const FlowPhysics& physics) const {
-  if (isFriction()) return s;
-  MaterialParameters<double> m = physics.material;
-  const double value = std::abs(materialEntry(kind, m));
+  if (isFriction() || !relativeStep) return s;
+  const double value = std::abs(physics.material.values[material]);
   return value > 0.0 ? s * value : s;
 }
 
 double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics, const std::vector<ContactWall>& walls) {
-  if (!h.isFriction()) {
-    MaterialParameters<double> m = physics.material;
-    return materialEntry(h.kind, m);
-  }
+  if (!h.isFriction()) return physics.material.values[h.material];
   for (size_t w = 0; w < walls.size(); ++w)
     if (h.entersWall(static_cast<int>(w), walls[w])) {
       const FrictionParameters<double> fp = walls[w].frictionParameters();
@@ -98,7 +111,7 @@ double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics,
 
 void shiftParameter(const SensitivityParameter& h, double delta, FlowPhysics& physics, std::vector<ContactWall>& walls) {
   if (!h.isFriction()) {
-    materialEntry(h.kind, physics.material) += delta;
+    physics.material.values[h.material] += delta;
     return;
   }
   for (size_t w = 0; w < walls.size(); ++w) {

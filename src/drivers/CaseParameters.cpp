@@ -11,6 +11,7 @@
 #include "flowform/freesurface/FreeSurfaceLoop.hpp"
 #include "flowform/drivers/OutputFields.hpp"
 #include "flowform/mesh/MeshReader.hpp"
+#include "flowform/physics/materials/MaterialLaws.hpp"
 #include "flowform/solvers/NonlinearSolver.hpp"
 #include "flowform/responses/ResponseRegistry.hpp"
 #include "flowform/responses/Responses.hpp"
@@ -84,11 +85,8 @@ static void buildValidCaseParameters(const ValidList& valid) {
   problem.set("Body Force X", 0.0, "f_x, force per unit volume", finiteNumber());
   problem.set("Body Force Y", 0.0, "f_y, force per unit volume", finiteNumber());
 
-  ParameterList& material = valid->sublist("Material", false, "rigid-viscoplastic law (docs/theory.md §1)");
-  material.set("Yield Stress", 1.0, "σ0 >= 0 [stress]", nonNegative());
-  material.set("Rate Constant", 1.0, "γ > 0 [1/time]", positive());
-  material.set("Rate Exponent", 1.0, "n > 0: σ̄ = σ0 + (e/γ)^(1/n)", positive());
-  material.set("Strain Rate Cutoff", 1e-3, "e0 > 0: e_r = sqrt(e² + e0²) [1/time]", positive());
+  // The default law's list; validateCase validates against the case's law's (physics/materials/).
+  valid->set("Material", *validMaterialParameters(0), "rigid-viscoplastic law (docs/theory.md §1)");
 
   ParameterList& stab = valid->sublist("Stabilization", false, "pressure stabilization");
   stab.set("Beta", 0.1, "β in τ_K = β h_K² / (2 μ_K); h_K = cell diameter (docs/verification.md)", nonNegative());
@@ -190,7 +188,10 @@ void validateCase(ParameterList& params) {
   } catch (const std::exception& e) {
     throw InputError("in the case parameter list: " + cleanTeuchosMessage(e.what()));
   }
-  for (const char* name : {"Problem", "Material", "Stabilization", "Solver", "Output", "Contact", "Error Estimation",
+  const ParameterList& validMaterial = *validMaterialParameters(materialLawOf(params.sublist("Material")));
+  checkTypes(params.sublist("Material"), validMaterial, "Material");
+  validateSublist(params.sublist("Material"), validMaterial, "Material");
+  for (const char* name : {"Problem", "Stabilization", "Solver", "Output", "Contact", "Error Estimation",
                            "Free Surface"})
     validateSublist(params.sublist(name), valid.sublist(name), name);
   if (!params.isSublist("Mesh") || !params.sublist("Mesh").isParameter("File"))
@@ -245,8 +246,7 @@ bool adaptivityRequested(const ParameterList& params) {
 FlowPhysics physicsFromCase(const ParameterList& params) {
   FlowPhysics physics;
   const ParameterList& mat = params.sublist("Material");
-  physics.material = {mat.get<double>("Yield Stress"), mat.get<double>("Rate Constant"),
-                      mat.get<double>("Rate Exponent"), mat.get<double>("Strain Rate Cutoff")};
+  physics.material = materialFromParameters(mat);
   const ParameterList& problem = params.sublist("Problem");
   physics.kernel.geometry =
       problem.get<std::string>("Geometry") == "Axisymmetric" ? Geometry::Axisymmetric : Geometry::PlaneStrain;

@@ -53,7 +53,8 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   // Only a case with a Sensitivity sublist gets one: none means no work.
   const ParameterList& own = m_problem->parameters();
   m_sensitivity = std::make_unique<Sensitivity>(own.isSublist("Sensitivity") ? &own.sublist("Sensitivity") : nullptr,
-                                                m_problem->contactWalls(), m_problem->responses());
+                                                m_problem->contactWalls(), m_problem->responses(),
+                                                m_problem->physics().material.law);
   m_setupSeconds = secondsSince(start);
 }
 

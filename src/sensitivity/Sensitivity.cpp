@@ -23,9 +23,17 @@ const char* const kFieldEntries[] = {"velocity_field", "pressure_field"};
 }  // namespace
 
 static void buildValidParameters(const ValidList& valid) {
+  std::string materialNames;  // per registered law, its sensitivity parameters
+  for (const MaterialLawInfo& law : materialLaws()) {
+    std::string names;
+    for (const MaterialParameterInfo& p : law.parameters)
+      if (p.sensitivity) names += (names.empty() ? "" : ", ") + std::string(p.name);
+    materialNames += (materialNames.empty() ? "" : "; ") + law.name + ": " + names;
+  }
   valid->set("Parameters", Teuchos::Array<std::string>(),
              "parameters h to differentiate by: Friction Coefficient (every wall's ν), Friction Coefficient:<wall>, "
-             "Shear Factor, Shear Factor:<wall>, Yield Stress, Rate Constant, Rate Exponent; none: no sensitivity work");
+             "Shear Factor, Shear Factor:<wall>, and the sensitivity parameters of the case's Material/Law (" +
+                 materialNames + "); none: no sensitivity work");
   valid->set("Finite Difference Check", false,
              "recompute every sensitivity by central differences (two more nonlinear solves per parameter, from the "
              "converged state, each with its contact-status loop) and report the relative difference (fd_check)");
@@ -55,14 +63,14 @@ Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
 }
 
 Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls,
-                         const Responses& responses) {
+                         const Responses& responses, int materialLaw) {
   if (!list) return;
   std::set<std::string> seen;
   for (const std::string& given : list->get<Teuchos::Array<std::string>>("Parameters")) {
     const std::string name = trim(given);
     if (name.empty()) continue;
     if (!seen.insert(name).second) throw InputError("Sensitivity/Parameters: '" + name + "' is given twice");
-    m_parameters.push_back(parseSensitivityParameter(name, walls));
+    m_parameters.push_back(parseSensitivityParameter(name, walls, materialLaw));
     // The Tresca bound m σ̄_k/√3 uses σ̄_k held from the start of the solve (ContactWall::
     // setScales), so its dependence on the material parameters (and on q) is not in ∂R/∂h
     // or K_t: refuse rather than report a derivative that misses a full-size term.

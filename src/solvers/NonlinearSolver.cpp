@@ -125,7 +125,7 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, const
     m_model.restartLinearization();
     if (m_beforeNewton) m_beforeNewton(x);
   }
-  StageReport report{physics.material.rateExponent, physics.material.cutoff, 0, false, 0.0};
+  StageReport report{rateExponent(physics.material), physics.material.cutoff, 0, false, 0.0};
 
   auto group = Teuchos::rcp(new FlowGroup(m_model, x));
   // A loose solve (looseTolerance > 0) stops at ||F|| ≤ looseTolerance ||F_0|| with the
@@ -141,7 +141,7 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, const
   auto finite = Teuchos::rcp(new NOX::StatusTest::FiniteValue);
   auto budget = Teuchos::rcp(new BudgetTest);
   std::ostringstream where;
-  where << "Newton at n = " << formatNumber(physics.material.rateExponent) << ", e0 = "
+  where << "Newton at n = " << formatNumber(rateExponent(physics.material)) << ", e0 = "
         << formatNumber(physics.material.cutoff);
   const BudgetScope scope(where.str(), [&] { return std::to_string(budget->iterations()) + " iteration(s)"; });
   auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
@@ -251,10 +251,9 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
     return report;
   }
 
-  // Newtonian predictor: μ = 1/(3γ) everywhere.
+  // Newtonian predictor: μ = 1/(3γ) everywhere (γ the law's, materials/MaterialLaws.hpp).
   FlowPhysics stokes = target;
-  stokes.material.yieldStress = 0.0;
-  stokes.material.rateExponent = 1.0;
+  stokes.material = newtonianPredictor(target.material);
   const Vector xStart(x, Teuchos::Copy);
   const double predictorResidual = linearSolve(x, stokes);
   log() << "  Newtonian predictor: |F| = " << std::scientific << std::setprecision(3) << predictorResidual
@@ -267,9 +266,9 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
   }
 
   const Teuchos::ParameterList& cont = m_params.sublist("Continuation");
-  const double nStart = std::min(cont.get<double>("Start Exponent"), target.material.rateExponent);
+  const double nStart = std::min(cont.get<double>("Start Exponent"), rateExponent(target.material));
   const double e0Start = std::max(cont.get<double>("Start Cutoff"), target.material.cutoff);
-  const bool needsContinuation = nStart < target.material.rateExponent || e0Start > target.material.cutoff;
+  const bool needsContinuation = nStart < rateExponent(target.material) || e0Start > target.material.cutoff;
   double step = needsContinuation ? cont.get<double>("Initial Step") : 1.0;
   const double minStep = minimumStep > 0.0 ? minimumStep : cont.get<double>("Minimum Step");
   const double growth = cont.get<double>("Growth Factor");
@@ -277,7 +276,7 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
   // The physics at λ: n and e0 interpolated geometrically, exactly the target at λ = 1.
   auto stageAt = [&](double l) {
     FlowPhysics stage = target;
-    stage.material.rateExponent = std::pow(nStart, 1.0 - l) * std::pow(target.material.rateExponent, l);
+    rateExponent(stage.material) = std::pow(nStart, 1.0 - l) * std::pow(rateExponent(target.material), l);
     stage.material.cutoff = std::pow(e0Start, 1.0 - l) * std::pow(target.material.cutoff, l);
     if (l == 1.0) stage.material = target.material;  // no rounding
     return stage;
@@ -304,7 +303,7 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
     }
     const double next = std::min(1.0, lambda + step);
     const FlowPhysics stage = stageAt(next);
-    log() << "  stage lambda = " << next << ": n = " << stage.material.rateExponent
+    log() << "  stage lambda = " << next << ": n = " << rateExponent(stage.material)
           << ", e0 = " << stage.material.cutoff << "\n";
     Tpetra::deep_copy(x, xConverged);
     StageReport sr = newton(x, stage);
@@ -326,7 +325,7 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
       log() << "  stage failed after " << sr.newtonIterations << " iterations (|F| = " << sr.residualNorm
             << "); step -> " << step << "\n";
       if (step < minStep || !needsContinuation) {
-        report.message = "Newton did not converge at n = " + formatNumber(stage.material.rateExponent) +
+        report.message = "Newton did not converge at n = " + formatNumber(rateExponent(stage.material)) +
                          ", e0 = " + formatNumber(stage.material.cutoff) + ": |F| = " + formatNumber(sr.residualNorm) +
                          " after " + std::to_string(sr.newtonIterations) + " iterations, against the tolerance " +
                          formatNumber(std::max(m_params.get<double>("Absolute Residual Tolerance"),

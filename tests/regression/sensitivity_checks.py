@@ -17,6 +17,13 @@ subcommands
   one-sided   the extrusion at ν = 0.05 with δ = 8e-4: a node of the first contact wall (the
               container) goes from slip to stick at ν + δ; the entries must say one_sided, list
               that node, and name the side on which nothing changed.
+  sellars-tegart  xml/channel_sellars_tegart.xml (the channel with the Sellars–Tegart law,
+              docs/theory.md §1): du/dh and dp/dh for h = Q, T, α, A, n by DDM vs the built-in
+              central differences < 1e-5 (relative steps of --step; the test passes 5e-5); one
+              factorization for the five; Q and T enter only through Q/T, so T |du/dT| = Q |du/dQ|
+              (1e-8). Q and T move ln Z by (Q/(R T)) δ = 24.9 δ, so their truncation is ~600× that of
+              a step δ in the other parameters: measured 4.1e-6 (Q, velocity) at δ = 2e-4, hence
+              5e-5 (~2.6e-7 by δ², the others ≤ 2e-7; the solver error grows 4× to ≲ 1e-9).
   no-work     the channel without a Sensitivity list, with one (DDM only), and with an empty
               Parameters array: the first and last do no sensitivity work (no factorization,
               solve, field or column beyond the flow solve's), the second exactly one
@@ -159,6 +166,37 @@ def one_sided(args, c):
     c.check(v["one_sided"], "the field entries are flagged too")
 
 
+ST_PARAMETERS = {"Activation Energy": "Q", "Temperature": "T", "Stress Multiplier": "alpha", "Rate Factor": "A",
+                 "Rate Exponent": "n"}
+
+
+def sellars_tegart(args, c):
+    case = os.path.join(args.source, "xml", "channel_sellars_tegart.xml")
+    out = os.path.join(args.work, "sellars_tegart")
+    s = run(args.flowform, case, out,
+            ["Sensitivity/Parameters={" + ", ".join(ST_PARAMETERS) + "}", "Sensitivity/Finite Difference Check=true",
+             f"Sensitivity/Finite Difference Step={args.step}"])
+    c.check(s["parameters"]["Material"]["Law"] == "Sellars-Tegart", "the case runs the Sellars-Tegart law")
+    sens = s["sensitivity"]
+    c.check(sens["factorizations"] == 1 and sens["solves"] == 5,
+            f"one factorization, one back-substitution per parameter ({sens['factorizations']}, {sens['solves']})")
+    c.check(sens["finite_difference"]["runs"] == 10, f"two solves per parameter ({sens['finite_difference']['runs']})")
+    for field in ["velocity_field", "pressure_field"]:
+        for p in ST_PARAMETERS:
+            e = s["fd_check"][field][p]
+            c.check(not e["one_sided"] and e["rel_diff"] < TOL,
+                    f"{field} d/d{p}: |DDM| {e['ddm']:.6g}, |FD| {e['fd']:.6g}, rel. difference {e['rel_diff']:.3e} < {TOL}")
+        q, t = s["parameters"]["Material"]["Activation Energy"], s["parameters"]["Material"]["Temperature"]
+        dq, dt = s["fd_check"][field]["Activation Energy"]["ddm"], s["fd_check"][field]["Temperature"]["ddm"]
+        # Exact in exact arithmetic (∂R/∂T = −(Q/T) ∂R/∂Q, one factorization); the back-substitution's
+        # round-off is relative to the whole vector, of which dp/dh is ~1e-3: measured 3.6e-10 (p),
+        # 1e-12 (u). 1e-8; a wrong factor (R, T², the sign) is O(1).
+        c.check(abs(t * dt - q * dq) <= 1e-8 * q * dq, f"{field}: T |d/dT| = {t * dt:.12g} = Q |d/dQ| = {q * dq:.12g}")
+    names = set(h5io.field_names(out))
+    want = {f"d{v}_d{sym}" for v in "up" for sym in ST_PARAMETERS.values()}
+    c.check(want <= names, f"solution.h5 has {sorted(want)}")
+
+
 def no_work(args, c):
     case = os.path.join(args.source, "xml", "channel.xml")
     base = run(args.flowform, case, os.path.join(args.work, "none"), [])
@@ -188,19 +226,20 @@ def no_work(args, c):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("subcommand", choices=["channel", "extrusion", "external", "one-sided", "no-work"])
+    parser.add_argument("subcommand", choices=["channel", "extrusion", "external", "one-sided", "sellars-tegart",
+                                                       "no-work"])
     parser.add_argument("flowform")
     parser.add_argument("source")
     parser.add_argument("work")
     parser.add_argument("--nu", default="0.05,0.1,0.3")
     parser.add_argument("--penalty-viscosity", default="1.0",
                         help="external: the walls' fixed Penalty Viscosity ('' = the adaptive default)")
-    parser.add_argument("--step", default="2e-4", help="channel: the FD step (a coarse one must fail the check)")
+    parser.add_argument("--step", default="2e-4", help="channel, sellars-tegart: the FD step (a coarse one must fail the check)")
     args = parser.parse_args()
     os.makedirs(args.work, exist_ok=True)
     c = Checker()
     {"channel": channel, "extrusion": extrusion, "external": external, "one-sided": one_sided,
-     "no-work": no_work}[args.subcommand](args, c)
+     "sellars-tegart": sellars_tegart, "no-work": no_work}[args.subcommand](args, c)
     print("FAILED" if c.failed else "PASSED")
     return 1 if c.failed else 0
 

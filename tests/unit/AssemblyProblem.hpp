@@ -32,8 +32,8 @@ using Teuchos::ParameterList;
 using Teuchos::RCP;
 using Field = std::function<std::array<double, 3>(double, double)>;  // (x, y) -> (u_x, u_y, p)
 
-const MaterialParameters<double> kNewtonian{0.0, 1.0, 1.0, 1e-3};
-const MaterialParameters<double> kNonlinear{0.5, 1.0, 5.0, 1e-2};
+const MaterialParameters<double> kNewtonian = flowform::powerLaw(0.0, 1.0, 1.0, 1e-3);
+const MaterialParameters<double> kNonlinear = flowform::powerLaw(0.5, 1.0, 5.0, 1e-2);
 
 inline RCP<const Comm> worldComm() {
   setLogEnabled(false);
@@ -156,7 +156,8 @@ inline std::string caseName(CellType type, Geometry geometry, const MaterialPara
 /// μ(D:D) of the law, written out (pow form) for the tractions of the exact solutions.
 inline double viscosityOf(double ddot, const MaterialParameters<double>& m) {
   const double er = std::sqrt(2.0 / 3.0 * ddot + m.cutoff * m.cutoff);
-  return (m.yieldStress + std::pow(er / m.rateConstant, 1.0 / m.rateExponent)) / (3.0 * er);
+  const auto& v = m.values;  // the power law: σ0, γ, n
+  return (v[0] + std::pow(er / v[1], 1.0 / v[2])) / (3.0 * er);
 }
 
 /// The conditions of the general test case on makeMesh's groups: symmetry on the inclined

@@ -24,8 +24,8 @@ using flowform::MaterialParameters;
 
 using XY = std::array<double, 2>;
 
-const MaterialParameters<double> kNewtonian{0.0, 1.0, 1.0, 1e-3};  // μ = 1/(3γ) = 1/3
-const MaterialParameters<double> kNonlinear{0.5, 1.0, 5.0, 1e-2};  // σ0, γ, n, e0
+const MaterialParameters<double> kNewtonian = flowform::powerLaw(0.0, 1.0, 1.0, 1e-3);  // μ = 1/(3γ) = 1/3
+const MaterialParameters<double> kNonlinear = flowform::powerLaw(0.5, 1.0, 5.0, 1e-2);  // σ0, γ, n, e0
 
 /// One cell with its quadrature, as the assembler sets it up: the centroid rule for P1 in
 /// plane strain (constant integrands), the 3-point / 2×2 rule otherwise.
@@ -65,7 +65,8 @@ inline FlowKernelSettings makeSettings(Geometry geometry, double beta, double fx
 /// μ(D:D) written out with pow (independent of Material.hpp's exp∘log form).
 inline double handViscosity(double ddot, const MaterialParameters<double>& m) {
   const double er = std::sqrt(2.0 / 3.0 * ddot + m.cutoff * m.cutoff);
-  return (m.yieldStress + std::pow(er / m.rateConstant, 1.0 / m.rateExponent)) / (3.0 * er);
+  const auto& v = m.values;  // the power law: σ0, γ, n
+  return (v[0] + std::pow(er / v[1], 1.0 / v[2])) / (3.0 * er);
 }
 
 inline double maxAbs(const std::vector<double>& v) {

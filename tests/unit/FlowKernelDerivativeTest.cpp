@@ -108,7 +108,7 @@ TEUCHOS_UNIT_TEST(FlowKernel, ParameterDerivativesMatchFiniteDifferences) {
   // Truncation ≤ 1e-9, round-off ≤ eps·|R|/(δ |∂R/∂h|) ≈ 1e-8 for the weakest (e0).
   // Compared relative to max_i |∂R_i/∂h| at 1e-6.
   using PFad = Sacado::Fad::SFad<double, 4>;
-  const double values[4] = {kNonlinear.yieldStress, kNonlinear.rateConstant, kNonlinear.rateExponent,
+  const double values[4] = {kNonlinear.values[0], kNonlinear.values[1], kNonlinear.values[2],  // σ0, γ, n
                             kNonlinear.cutoff};
   for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric})
     for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4}) {
@@ -116,15 +116,15 @@ TEUCHOS_UNIT_TEST(FlowKernel, ParameterDerivativesMatchFiniteDifferences) {
       const auto settings = makeSettings(geometry, 0.1, 0.3, -0.7);
       const auto x = scrambledDofs(cell.numDofs(), 0.7);
       std::vector<PFad> xf(x.begin(), x.end());
-      const MaterialParameters<PFad> mf{PFad(4, 0, values[0]), PFad(4, 1, values[1]), PFad(4, 2, values[2]),
-                                        PFad(4, 3, values[3])};
+      const MaterialParameters<PFad> mf = flowform::powerLaw(PFad(4, 0, values[0]), PFad(4, 1, values[1]),
+                                                             PFad(4, 2, values[2]), PFad(4, 3, values[3]));
       const auto rf = residual(cell, settings, mf, xf);
       // e_r scale for the e0 step: the largest over the cell's points is ~|grad u| ~ 1.
       const double steps[4] = {1e-5 * values[0], 1e-5 * values[1], 1e-5 * values[2], 1e-5};
       for (int k = 0; k < 4; ++k) {
         MaterialParameters<double> mp = kNonlinear, mm = kNonlinear;
-        double* vp[4] = {&mp.yieldStress, &mp.rateConstant, &mp.rateExponent, &mp.cutoff};
-        double* vm[4] = {&mm.yieldStress, &mm.rateConstant, &mm.rateExponent, &mm.cutoff};
+        double* vp[4] = {&mp.values[0], &mp.values[1], &mp.values[2], &mp.cutoff};
+        double* vm[4] = {&mm.values[0], &mm.values[1], &mm.values[2], &mm.cutoff};
         *vp[k] += steps[k];
         *vm[k] -= steps[k];
         const auto rp = residual(cell, settings, mp, x), rm = residual(cell, settings, mm, x);

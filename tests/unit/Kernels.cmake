@@ -1,6 +1,8 @@
 # Material law, flow kernel (hand values, AD Jacobian vs FD, rigid motions) and the
 # assembled problem (patch tests, exact solves, parallel = serial on 1 and 2 ranks).
 flowform_unit_test(MaterialTest unit/MaterialTest.cpp)
+# The Sellars–Tegart law and the material-law registry.
+flowform_unit_test(SellarsTegartTest unit/SellarsTegartTest.cpp)
 flowform_unit_test(FlowKernelTest unit/FlowKernelTest.cpp)
 flowform_unit_test(FlowKernelDerivativeTest unit/FlowKernelDerivativeTest.cpp)
 flowform_unit_test(AssemblyTest unit/AssemblyTest.cpp)

@@ -13,6 +13,7 @@
 namespace {
 
 using flowform::MaterialParameters;
+using flowform::powerLaw;
 // Fixed-size Fad throughout (as the assembler uses): GCC 12 reports a false -Wuse-after-free
 // inside Sacado's DFad storage.
 using Fad1 = Sacado::Fad::SFad<double, 1>;  // d/d(D:D)
@@ -23,8 +24,12 @@ using PFad = Sacado::Fad::SFad<double, 4>;  // one derivative per parameter: σ0
 double handRate(double ddot, const MaterialParameters<double>& m) {
   return std::sqrt(2.0 / 3.0 * ddot + m.cutoff * m.cutoff);
 }
+// The power law's parameters in MaterialParameters::values: σ0, γ, n.
+double sigma0(const MaterialParameters<double>& m) { return m.values[0]; }
+double gammaOf(const MaterialParameters<double>& m) { return m.values[1]; }
+double exponent(const MaterialParameters<double>& m) { return m.values[2]; }
 double handFlowStress(double eReg, const MaterialParameters<double>& m) {
-  return m.yieldStress + std::pow(eReg / m.rateConstant, 1.0 / m.rateExponent);
+  return sigma0(m) + std::pow(eReg / gammaOf(m), 1.0 / exponent(m));
 }
 double handViscosity(double eReg, const MaterialParameters<double>& m) {
   return handFlowStress(eReg, m) / (3.0 * eReg);
@@ -40,7 +45,7 @@ double libViscosityOfDdot(double ddot, const MaterialParameters<double>& m) {
 // wrong factor or exponent (e.g. 2/3 ↔ 3/2, 1/n ↔ n) is off by O(1).
 constexpr double kValueTol = 1e-14;
 
-const MaterialParameters<double> kLaw{0.5, 2.0, 4.0, 1e-3};  // σ0, γ, n, e0
+const MaterialParameters<double> kLaw = powerLaw(0.5, 2.0, 4.0, 1e-3);  // σ0, γ, n, e0
 
 TEUCHOS_UNIT_TEST(Material, HandValues) {
   // D:D values from the rigid limit to fast flow, so both regimes of e_r are exercised.
@@ -66,14 +71,14 @@ TEUCHOS_UNIT_TEST(Material, NewtonianViscosityIsConstant) {
   // n = 1, σ0 = 0: μ = (e_r/γ)/(3 e_r) = 1/(3γ) for every strain rate and cutoff.
   for (double gamma : {1.0, 1.7, 1e-2})
     for (double e0 : {1e-6, 1e-3, 0.5}) {
-      const MaterialParameters<double> m{0.0, gamma, 1.0, e0};
+      const MaterialParameters<double> m = powerLaw(0.0, gamma, 1.0, e0);
       TEST_ASSERT(flowform::isNewtonian(m));
       for (double ddot : {0.0, 1e-10, 1.0, 1e6})
         TEST_FLOATING_EQUALITY(libViscosityOfDdot(ddot, m), 1.0 / (3.0 * gamma), kValueTol);
     }
   TEST_ASSERT(!flowform::isNewtonian(kLaw));
-  TEST_ASSERT(!flowform::isNewtonian({0.0, 1.0, 2.0, 1e-3}));
-  TEST_ASSERT(!flowform::isNewtonian({0.1, 1.0, 1.0, 1e-3}));
+  TEST_ASSERT(!flowform::isNewtonian(powerLaw(0.0, 1.0, 2.0, 1e-3)));
+  TEST_ASSERT(!flowform::isNewtonian(powerLaw(0.1, 1.0, 1.0, 1e-3)));
 }
 
 TEUCHOS_UNIT_TEST(Material, StressInvariantMatchesFlowStress) {
@@ -99,7 +104,7 @@ TEUCHOS_UNIT_TEST(Material, DerivativeWrtDdotMatchesClosedFormAndFd) {
 
     const double r = handRate(ddot, kLaw);
     const double dr = 1.0 / (3.0 * r);
-    const double dsdr = std::pow(r / kLaw.rateConstant, 1.0 / kLaw.rateExponent) / (kLaw.rateExponent * r);
+    const double dsdr = std::pow(r / gammaOf(kLaw), 1.0 / exponent(kLaw)) / (exponent(kLaw) * r);
     const double dmudr = (r * dsdr - handFlowStress(r, kLaw)) / (3.0 * r * r);
     // Closed form vs AD: the same few operations in another order, round-off only (see
     // kValueTol); the derivatives are finite at D:D = 0 because e_r ≥ e0 > 0.
@@ -134,8 +139,8 @@ TEUCHOS_UNIT_TEST(Material, DerivativeThroughZeroStrainRateIsFinite) {
 
 /// μ at D:D = `ddot` with the parameters seeded: derivative i is dμ/d(parameter i).
 PFad viscosityWrtParameters(double ddot, const MaterialParameters<double>& m) {
-  const MaterialParameters<PFad> p{PFad(4, 0, m.yieldStress), PFad(4, 1, m.rateConstant),
-                                   PFad(4, 2, m.rateExponent), PFad(4, 3, m.cutoff)};
+  const MaterialParameters<PFad> p =
+      powerLaw(PFad(4, 0, sigma0(m)), PFad(4, 1, gammaOf(m)), PFad(4, 2, exponent(m)), PFad(4, 3, m.cutoff));
   // The strain measure is a constant (zero derivatives) of the parameter Fad type, as the
   // assembler's ParamDeriv evaluation would pass it.
   return flowform::viscosity(flowform::regularizedStrainRate(PFad(ddot), p), p);
@@ -143,7 +148,7 @@ PFad viscosityWrtParameters(double ddot, const MaterialParameters<double>& m) {
 
 MaterialParameters<double> perturbed(const MaterialParameters<double>& m, int which, double delta) {
   MaterialParameters<double> q = m;
-  double* v[4] = {&q.yieldStress, &q.rateConstant, &q.rateExponent, &q.cutoff};
+  double* v[4] = {&q.values[0], &q.values[1], &q.values[2], &q.cutoff};
   *v[which] += delta;
   return q;
 }
@@ -163,7 +168,7 @@ TEUCHOS_UNIT_TEST(Material, DerivativeWrtParametersMatchesFd) {
     // is then small), ≈ 2e-11 for the others. Tolerance 1e-6 relative: 10× above the
     // worst of these; a derivative missing a chain-rule factor is off by O(1).
     const double er = handRate(ddot, kLaw);
-    const double steps[4] = {1e-5 * kLaw.yieldStress, 1e-5 * kLaw.rateConstant, 1e-5 * kLaw.rateExponent,
+    const double steps[4] = {1e-5 * sigma0(kLaw), 1e-5 * gammaOf(kLaw), 1e-5 * exponent(kLaw),
                              1e-5 * er};
     for (int i = 0; i < 4; ++i) {
       const double h = steps[i];

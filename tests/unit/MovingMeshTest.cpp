@@ -67,7 +67,7 @@ struct Problem {
     FlowPhysics physics;
     physics.kernel.geometry = geometry;
     physics.kernel.beta = 0.1;
-    physics.material = {0.5, 1.0, 5.0, 1e-3};
+    physics.material = flowform::powerLaw(0.5, 1.0, 5.0, 1e-3);
     assembler->setPhysics(physics);
     assembler->setContactWalls(&walls);
   }

@@ -21,7 +21,7 @@ using flowform::StressDualPoint;
 const std::vector<XY> kTriangle = {{{1.1, 0.2}}, {{2.3, 0.4}}, {{1.5, 1.1}}};
 const std::vector<XY> kQuad = {{{1.0, 0.0}}, {{2.1, 0.2}}, {{2.3, 1.3}}, {{0.9, 1.0}}};
 // σ0 = 1, n = 5, e0 = 1e-3: nearly rigid-plastic (β ≈ −1), where the dual matters.
-const MaterialParameters<double> kPlastic{1.0, 1.0, 5.0, 1e-3};
+const MaterialParameters<double> kPlastic = flowform::powerLaw(1.0, 1.0, 5.0, 1e-3);
 
 std::vector<double> scrambled(int n, double phase) {
   std::vector<double> d(n);

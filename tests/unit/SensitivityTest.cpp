@@ -96,7 +96,7 @@ struct Problem {
     assembler = std::make_unique<Assembler>(mesh, *dofMap, *bcs);
     physics.kernel.geometry = geometry;
     physics.kernel.beta = 0.1;
-    physics.material = {0.5, 1.3, 5.0, 1e-2};
+    physics.material = flowform::powerLaw(0.5, 1.3, 5.0, 1e-2);
     assembler->setPhysics(physics);
     assembler->setContactWalls(&walls);
   }
@@ -151,7 +151,7 @@ TEUCHOS_UNIT_TEST(Sensitivity, AssembledParameterDerivativeMatchesFiniteDifferen
       TEST_COMPARE(count[static_cast<int>(FrictionBranch::SlipTresca)], >, 0);
 
       for (const char* name : kParameters) {
-        const SensitivityParameter h = parseSensitivityParameter(name, problem.walls);
+        const SensitivityParameter h = parseSensitivityParameter(name, problem.walls, 0);
         auto ad = problem.vector(), fp = problem.vector(), fm = problem.vector();
         problem.assembler->parameterDerivative(*x, h, *ad);
         const double delta = h.finiteDifferenceStep(1e-6, problem.physics);
@@ -187,7 +187,7 @@ TEUCHOS_UNIT_TEST(Sensitivity, ConstraintRowsDoNotDependOnParameters) {
   int nonzero = 0, constrained = 0;
   for (const char* name : kParameters) {
     auto d = problem.vector();
-    problem.assembler->parameterDerivative(*x, parseSensitivityParameter(name, problem.walls), *d);
+    problem.assembler->parameterDerivative(*x, parseSensitivityParameter(name, problem.walls, 0), *d);
     auto v = d->getLocalViewHost(Tpetra::Access::ReadOnly);
     for (LO n = 0; n < problem.dofMap->numOwnedNodes(); ++n)
       if (problem.bcs->constraints()[n].kind == NodeConstraint::Kind::Full) {
@@ -214,7 +214,7 @@ TEUCHOS_UNIT_TEST(Sensitivity, TangentIsJacobianTimesDirectionPlusParameterDeriv
     auto J = problem.assembler->createJacobian();
     problem.assembler->jacobian(*x, *J);
     J->apply(*v, *jv);
-    const SensitivityParameter h = parseSensitivityParameter("Friction Coefficient", problem.walls);
+    const SensitivityParameter h = parseSensitivityParameter("Friction Coefficient", problem.walls, 0);
     problem.assembler->parameterDerivative(*x, h, *dh);
     problem.assembler->tangent(*x, v.get(), &h, *t);
     t->update(-1.0, *jv, -1.0, *dh, 1.0);
@@ -257,7 +257,7 @@ TEUCHOS_UNIT_TEST(Sensitivity, ExtrusionFrictionSensitivityIsExactlyZeroInStickA
         ++count[static_cast<int>(branches[w][k])];
       }
     Vector d(sim.problem().dofMap().ownedMap());
-    sim.problem().model().assembler().parameterDerivative(sim.problem().solution(), parseSensitivityParameter("Friction Coefficient", walls),
+    sim.problem().model().assembler().parameterDerivative(sim.problem().solution(), parseSensitivityParameter("Friction Coefficient", walls, 0),
                                                 d);
     auto v = d.getLocalViewHost(Tpetra::Access::ReadOnly);
     int nonzeroWithoutSlip = 0, nonzeroAtSlip = 0, zeroWallRows = 0;
@@ -285,12 +285,12 @@ TEUCHOS_UNIT_TEST(Sensitivity, ExtrusionFrictionSensitivityIsExactlyZeroInStickA
 TEUCHOS_UNIT_TEST(Sensitivity, ParameterNamesAreValidated) {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   Problem problem(CellType::Triangle3, Geometry::PlaneStrain, comm);
-  const SensitivityParameter nu = parseSensitivityParameter("Friction Coefficient:top", problem.walls);
+  const SensitivityParameter nu = parseSensitivityParameter("Friction Coefficient:top", problem.walls, 0);
   TEST_EQUALITY(nu.symbol, std::string("nu_top"));
   TEST_EQUALITY_CONST(nu.wall, 1);
   auto message = [&](const std::string& name, const std::vector<ContactWall>& walls) {
     try {
-      parseSensitivityParameter(name, walls);
+      parseSensitivityParameter(name, walls, 0);
     } catch (const InputError& e) {
       return std::string(e.what());
     }
@@ -308,7 +308,7 @@ TEUCHOS_UNIT_TEST(Sensitivity, ParameterNamesAreValidated) {
   TEST_ASSERT(message("Yield Stress:bottom", problem.walls).find("not per wall") != std::string::npos);
   // Steps: absolute for friction, relative for the material.
   TEST_EQUALITY_CONST(nu.finiteDifferenceStep(2e-4, problem.physics), 2e-4);
-  const SensitivityParameter n = parseSensitivityParameter("Rate Exponent", problem.walls);
+  const SensitivityParameter n = parseSensitivityParameter("Rate Exponent", problem.walls, 0);
   TEST_FLOATING_EQUALITY(n.finiteDifferenceStep(2e-4, problem.physics), 1e-3, 1e-14);
 }
 

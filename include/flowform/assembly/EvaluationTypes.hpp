@@ -60,11 +60,13 @@ MaterialParameters<PScalar> materialFor(const MaterialParameters<double>& m, con
   if constexpr (std::is_same_v<PScalar, double>) {
     return m;
   } else {
-    auto seed = [&](double value, ParameterKind kind) {
-      return h && h->kind == kind ? PScalar(1, 0, value) : PScalar(value);
-    };
-    return {seed(m.yieldStress, ParameterKind::YieldStress), seed(m.rateConstant, ParameterKind::RateConstant),
-            seed(m.rateExponent, ParameterKind::RateExponent), PScalar(m.cutoff)};
+    MaterialParameters<PScalar> p;
+    p.law = m.law;
+    for (int i = 0; i < kMaxMaterialParameters; ++i)
+      p.values[i] = h && h->kind == ParameterKind::Material && h->material == i ? PScalar(1, 0, m.values[i])
+                                                                                 : PScalar(m.values[i]);
+    p.cutoff = PScalar(m.cutoff);
+    return p;
   }
 }
 

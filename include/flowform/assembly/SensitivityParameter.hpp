@@ -1,11 +1,13 @@
 // A parameter h of the model that sensitivity analysis differentiates by (docs/theory.md §4, paper
 // §3): the friction coefficient ν (every contact wall, or one), the shear factor m (the
-// same), and the material's σ0, γ, n. The case names them in Sensitivity/Parameters:
+// same), and the sensitivity parameters the case's material law declares
+// (physics/materials/). The case names them in Sensitivity/Parameters:
 //
 //   "Friction Coefficient"              ν of every wall whose law uses it, moved together
 //   "Friction Coefficient:<wall group>" ν of one wall
 //   "Shear Factor", "Shear Factor:<wall group>"   m, likewise
-//   "Yield Stress" σ0, "Rate Constant" γ, "Rate Exponent" n
+//   a material law's parameter, e.g. the power law's "Yield Stress" σ0, "Rate Constant" γ,
+//   "Rate Exponent" n, or Sellars–Tegart's "Activation Energy" Q, "Temperature" T, ...
 //
 // The AD seeding with such a parameter: EvaluationTypes.hpp.
 #pragma once
@@ -20,13 +22,16 @@ namespace flowform {
 
 struct FlowPhysics;
 
-enum class ParameterKind { FrictionCoefficient, ShearFactor, YieldStress, RateConstant, RateExponent };
+/// The friction parameters, or one of the material law's (which: `material`).
+enum class ParameterKind { FrictionCoefficient, ShearFactor, Material };
 
 struct SensitivityParameter {
   std::string name;    ///< as the case gives it, e.g. "Friction Coefficient:<wall group>"
-  std::string symbol;  ///< for field and column names: nu, nu_<wall group>, m, sigma0, gamma, n
-  ParameterKind kind = ParameterKind::YieldStress;
+  std::string symbol;  ///< for field and column names: nu, nu_<wall group>, m, the law's (sigma0, gamma, n, ...)
+  ParameterKind kind = ParameterKind::Material;
   int wall = -1;       ///< friction parameters: the wall's index, −1 for every wall
+  int material = -1;   ///< material parameters: the index in MaterialParameters::values
+  bool relativeStep = false;  ///< the finite-difference step is relative (the law says)
 
   bool isFriction() const { return kind == ParameterKind::FrictionCoefficient || kind == ParameterKind::ShearFactor; }
   /// Whether this parameter enters wall `w`'s law.
@@ -36,14 +41,17 @@ struct SensitivityParameter {
   }
   /// The finite-difference step for a requested step s: absolute (δ = s) for the
   /// dimensionless friction parameters ν and m, which may be 0 (the paper's Δν = 2·10⁻⁴);
-  /// relative (δ = s |h|) for σ0, γ, n, which carry units and scales; s if σ0 = 0.
+  /// for a material parameter as its law declares: relative (δ = s |h|; s if h = 0) for
+  /// those that carry units and scales (all of today's laws' parameters), else absolute.
   double finiteDifferenceStep(double s, const FlowPhysics& physics) const;
 };
 
-/// Parses a name of Sensitivity/Parameters. InputError naming the allowed names (those of
-/// the case's walls included) for an unknown name, for a friction parameter when the case
-/// has no contact wall, or when no wall's law uses it.
-SensitivityParameter parseSensitivityParameter(const std::string& name, const std::vector<ContactWall>& walls);
+/// Parses a name of Sensitivity/Parameters for a case with material law `law` (an index of
+/// materialLaws()). InputError naming the allowed names (those of the case's walls and of
+/// its law included) for an unknown name or another law's parameter, for a friction
+/// parameter when the case has no contact wall, or when no wall's law uses it.
+SensitivityParameter parseSensitivityParameter(const std::string& name, const std::vector<ContactWall>& walls,
+                                               int law);
 
 /// The value of h in the case (for a friction parameter of every wall: the first using it).
 double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics, const std::vector<ContactWall>& walls);

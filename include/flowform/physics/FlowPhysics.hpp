@@ -9,7 +9,7 @@ namespace flowform {
 
 struct FlowPhysics {
   FlowKernelSettings kernel;
-  MaterialParameters<double> material{0.0, 1.0, 1.0, 1e-3};
+  MaterialParameters<double> material = powerLaw(0.0, 1.0, 1.0, 1e-3);
 };
 
 }  // namespace flowform

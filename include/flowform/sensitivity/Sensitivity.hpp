@@ -45,12 +45,14 @@ class Sensitivity {
   /// `list` is the case's validated "Sensitivity" sublist, or null when the case has none
   /// (then nothing is requested and compute() is never called). InputError for a bad
   /// parameter name, a repeated one, or a response whose name a check entry uses.
-  Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls, const Responses& responses);
+  /// `materialLaw` (an index of materialLaws()) gives the material's sensitivity parameters.
+  Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls, const Responses& responses,
+              int materialLaw);
 
   bool requested() const { return !m_parameters.empty(); }
   const std::vector<SensitivityParameter>& parameters() const { return m_parameters; }
   bool checkRequested() const { return requested() && m_check; }
-  /// The requested finite-difference step (absolute for ν and m, relative for σ0, γ, n).
+  /// The requested finite-difference step (absolute for ν and m, relative for the material parameters).
   double step() const { return m_step; }
   /// Whether the finite-difference runs hold the base run's contact penalty scales.
   bool holdScalesInCheck() const { return m_holdScales; }
