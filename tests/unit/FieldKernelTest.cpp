@@ -1,6 +1,7 @@
 // A second, independent field beside the flow (physics kernels as plug-ins): the passive
 // scalar c of AdvectionDiffusionKernel, registered after the flow's fields and assembled by
-// its own kernel, on P1 and Q1 meshes, at 1 and 2 ranks:
+// its own kernel, on P1 and Q1 meshes, at 1 and 2 ranks, advected by a prescribed w or by
+// the flow's u_h (then the kernel reads u and owns c only):
 //  - the flow's rows are untouched: at the same flow values, the residual and the Jacobian
 //    rows of (u_x, u_y, p) equal those of a flow-only assembly bitwise, entry by entry
 //    (matched by node and component: the dof numbers differ), and their entries in the c
@@ -9,6 +10,8 @@
 //    boundary is reproduced by Newton on the coupled system to 1e-10 (a linear field is in
 //    the P1/Q1 space and the kernel's quadrature is exact for it, see the kernel's comment;
 //    the solve is direct, so the error is round-off, ~1e-14 here);
+//  - advected by u_h, the assembled Jacobian (its c rows have u columns) matches central
+//    differences of the assembled residual;
 //  - a set of kernels that leaves a field without rows, or owns one twice, is refused.
 #include "AssemblyProblem.hpp"
 
@@ -37,6 +40,9 @@ FieldRegistry flowAndScalar() {
 }
 
 /// The flow and the passive scalar: Problem's members with the two-field registry.
+using PrescribedScalar = AdvectionDiffusionKernel<AdvectingVelocity::Prescribed>;
+using FlowAdvectedScalar = AdvectionDiffusionKernel<AdvectingVelocity::Flow>;
+
 struct TwoFieldProblem {
   Mesh mesh;
   std::unique_ptr<DofMap> dofMap;
@@ -44,7 +50,8 @@ struct TwoFieldProblem {
   std::unique_ptr<Assembler> assembler;
   std::unique_ptr<FlowModel> model;
 
-  TwoFieldProblem(Mesh m, const ParameterList& bcList, const FlowPhysics& physics, const RCP<const Comm>& comm)
+  TwoFieldProblem(Mesh m, const ParameterList& bcList, const FlowPhysics& physics, const RCP<const Comm>& comm,
+                  AdvectingVelocity velocity = AdvectingVelocity::Prescribed)
       : mesh(std::move(m)) {
     const FieldRegistry fields = flowAndScalar();
     dofMap = std::make_unique<DofMap>(mesh, comm, std::vector<std::array<GO, 2>>{}, fields);
@@ -52,7 +59,9 @@ struct TwoFieldProblem {
     assembler = std::make_unique<Assembler>(mesh, *dofMap, *bcs);
     assembler->setPhysics(physics);
     assembler->setKernels({makeCellKernel(FlowKernel{}, fields),
-                           makeCellKernel(AdvectionDiffusionKernel(scalarSettings()), fields)});
+                           velocity == AdvectingVelocity::Prescribed
+                               ? makeCellKernel(PrescribedScalar(scalarSettings()), fields)
+                               : makeCellKernel(FlowAdvectedScalar(scalarSettings()), fields)});
     Teuchos::ParameterList linear("Linear Solver");
     linear.validateParametersAndSetDefaults(*validLinearSolverParameters());
     model = std::make_unique<FlowModel>(*assembler, createLinearSolver(linear, *comm));
@@ -94,11 +103,12 @@ TEUCHOS_UNIT_TEST(FieldKernel, FlowRowsUnchangedByAScalarField) {
     return 0.3 + std::sin(1.3 * x - 0.7 * y);  // any values: the flow must not see them
   };
   for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4})
-    for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric}) {
+    for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric})
+    for (AdvectingVelocity velocity : {AdvectingVelocity::Prescribed, AdvectingVelocity::Flow}) {
       const Mesh mesh = makeMesh(type, 6, 4, 0.2, 0.0, 2.0, 1.0, 0.2, 0.3);
       const FlowPhysics physics = makePhysics(geometry, kNonlinear, 0.1, 0.2, -0.3);
       Problem flow(mesh, generalConditions(), physics, comm);
-      TwoFieldProblem both(mesh, generalConditions(), physics, comm);
+      TwoFieldProblem both(mesh, generalConditions(), physics, comm, velocity);
       auto x1 = flow.vector(), f1 = flow.vector(), x2 = both.vector(), f2 = both.vector();
       interpolate(flow.mesh, *flow.dofMap, kSmooth, *x1);
       interpolate(both.mesh, *both.dofMap, kSmooth, scalar, *x2);
@@ -132,7 +142,7 @@ TEUCHOS_UNIT_TEST(FieldKernel, FlowRowsUnchangedByAScalarField) {
         }
       }
       out << cellTypeName(type) << (geometry == Geometry::PlaneStrain ? ", plane strain" : ", axisymmetric")
-          << ": flow rows differing in F: " << residualDiffer << ", in J: " << jacobianDiffer
+          << (velocity == AdvectingVelocity::Flow ? ", w = u_h" : ", w prescribed") << ": flow rows differing in F: " << residualDiffer << ", in J: " << jacobianDiffer
           << ", nonzero c columns in flow rows: " << coupled << " (max |F_flow| " << flowScale << ")\n";
       TEST_COMPARE(globalMax(*comm, flowScale), >, 0.1);  // a real residual, not zeros compared
       TEST_EQUALITY(globalMax(*comm, residualDiffer), 0.0);
@@ -190,6 +200,54 @@ TEUCHOS_UNIT_TEST(FieldKernel, LinearScalarIsExact) {
   }
 }
 
+TEUCHOS_UNIT_TEST(FieldKernel, FlowAdvectedJacobianMatchesFiniteDifferences) {
+  // J v against (F(x + δv) − F(x − δv)) / (2δ), δ = 1e-6, as in AssemblyTest's check (same
+  // tolerance and reasons: 1e-7 |J v|∞). The c rows are bilinear in (u, c): their FD error is
+  // round-off only; dropping the u columns of the c rows (the read-not-owned gather) errs by
+  // |w_u·∇c| = O(1), which the second direction (u only) measures on its own.
+  const auto comm = worldComm();
+  const std::function<double(double, double)> scalar = [](double x, double y) { return std::sin(1.3 * x - 0.7 * y); };
+  const Field direction = [](double x, double y) {
+    return std::array<double, 3>{std::cos(0.7 * x + 2.0 * y), std::sin(1.9 * x - 0.5 * y), std::cos(1.2 * x * y)};
+  };
+  const std::function<double(double, double)> scalarDirection = [](double x, double y) { return std::cos(x + y); };
+  const std::function<double(double, double)> none = [](double, double) { return 0.0; };
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4})
+    for (bool velocityOnly : {false, true}) {
+      TwoFieldProblem problem(makeMesh(type, 6, 4, 0.2, 0.0, 2.0, 1.0, 0.2, 0.3), generalConditions(),
+                              makePhysics(Geometry::PlaneStrain, kNonlinear, 0.1, 0.3, -0.7), comm, AdvectingVelocity::Flow);
+      auto x = problem.vector(), v = problem.vector(), jv = problem.vector();
+      auto xp = problem.vector(), xm = problem.vector(), fp = problem.vector(), fm = problem.vector();
+      interpolate(problem.mesh, *problem.dofMap, kSmooth, scalar, *x);
+      problem.bcs->imposeOnSolution(*x);
+      interpolate(problem.mesh, *problem.dofMap, direction, velocityOnly ? none : scalarDirection, *v);
+      auto J = problem.assembler->createJacobian();
+      problem.assembler->jacobian(*x, *J);
+      J->apply(*v, *jv);
+      const double delta = 1e-6;
+      xp->update(1.0, *x, delta, *v, 0.0);
+      xm->update(1.0, *x, -delta, *v, 0.0);
+      problem.assembler->residual(*xp, *fp);
+      problem.assembler->residual(*xm, *fm);
+      fp->update(-1.0 / (2 * delta), *fm, 1.0 / (2 * delta));  // the FD derivative
+      // The c rows of J v alone: their size shows the u columns are there.
+      double cRows = 0.0;
+      {
+        auto jvv = jv->getLocalViewHost(Tpetra::Access::ReadOnly);
+        const DofMap& d = *problem.dofMap;
+        const int cc = d.fields().component("Concentration");
+        for (LO n = 0; n < d.numOwnedNodes(); ++n) cRows = std::max(cRows, std::abs(jvv(d.dof(n, cc), 0)));
+      }
+      cRows = globalMax(*comm, cRows);
+      fp->update(-1.0, *jv, 1.0);
+      const double err = fp->normInf(), scale = jv->normInf();
+      out << cellTypeName(type) << (velocityOnly ? ", direction in u only" : ", direction in u and c")
+          << ": |Jv − FD|∞ / |Jv|∞ = " << err / scale << ", max |(Jv)_c| = " << cRows << "\n";
+      TEST_COMPARE(err, <=, 1e-7 * scale);
+      TEST_COMPARE(cRows, >, 1e-2);
+    }
+}
+
 TEUCHOS_UNIT_TEST(FieldKernel, EveryFieldOwnedOnce) {
   const auto comm = worldComm();
   const Mesh mesh = makeMesh(CellType::Triangle3, 3, 2, 0.0, 0.0, 1.0, 1.0, 0.0);
@@ -201,11 +259,11 @@ TEUCHOS_UNIT_TEST(FieldKernel, EveryFieldOwnedOnce) {
   TEST_THROW(assembler.residual(x, f), std::logic_error);
   TEST_THROW(assembler.setKernels({makeCellKernel(FlowKernel{}, fields), makeCellKernel(FlowKernel{}, fields)}),
              std::invalid_argument);
-  assembler.setKernels({makeCellKernel(FlowKernel{}, fields), makeCellKernel(AdvectionDiffusionKernel({}), fields)});
+  assembler.setKernels({makeCellKernel(FlowKernel{}, fields), makeCellKernel(PrescribedScalar({}), fields)});
   TEST_NOTHROW(assembler.residual(x, f));
   AdvectionDiffusionSettings unknown;
   unknown.field = "Temperature";
-  TEST_THROW(makeCellKernel(AdvectionDiffusionKernel(unknown), fields), std::invalid_argument);
+  TEST_THROW(makeCellKernel(PrescribedScalar(unknown), fields), std::invalid_argument);
 }
 
 }  // namespace
