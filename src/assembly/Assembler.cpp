@@ -1,6 +1,8 @@
 #include "flowform/assembly/Assembler.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Assembly_Helpers.hpp>
@@ -9,11 +11,15 @@
 #include "flowform/discretization/CellGeometry.hpp"
 #include "flowform/discretization/ElementLayout.hpp"
 #include "flowform/physics/FlowResidual.hpp"
+#include "flowform/physics/kernels/FlowKernel.hpp"
 
 namespace flowform {
 
 Assembler::Assembler(const Mesh& mesh, const DofMap& dofMap, const BoundaryConditions& bcs)
     : m_mesh(mesh), m_dofMap(dofMap), m_bcs(bcs) {
+  // The flow kernel alone; a case with more fields must give its kernels (setKernels).
+  m_kernels = {makeCellKernel(FlowKernel{}, dofMap.fields())};
+  m_kernelError = checkKernels(m_kernels);
   m_xOverlap = Teuchos::rcp(new Vector(dofMap.overlapMap()));
   m_fOverlap = Teuchos::rcp(new Vector(dofMap.overlapMap()));
   m_dxOverlap = Teuchos::rcp(new Vector(dofMap.overlapMap()));
@@ -54,9 +60,47 @@ void Assembler::setContactWalls(const std::vector<ContactWall>* walls) {
     for (int k = 0; k < wall.numNodes(); ++k) {
       const LO node = m_dofMap.overlapIndex(wall.curve().nodes[k]);
       if (!m_dofMap.ownsNode(node)) continue;  // the owner assembles it
-      auto local = [&](int j) { return j < 0 ? LO(-1) : m_dofMap.overlapIndex(wall.curve().nodes[j]); };
-      m_wallNodes.push_back({static_cast<int>(w), k, node, local(wall.previous(k)), local(wall.next(k))});
+      WallNodeRef r{static_cast<int>(w), k, node, {}};
+      const auto stencil = wall.nodeStencil(k);
+      for (int i = 0; i < ContactWall::kNodeStencilSize; ++i) {
+        const int j = stencil[i].node;
+        r.dofs[i] = j < 0 ? LO(-1) : m_dofMap.dof(m_dofMap.overlapIndex(wall.curve().nodes[j]), stencil[i].component);
+      }
+      m_wallNodes.push_back(r);
     }
+  }
+}
+
+std::string Assembler::checkKernels(const std::vector<std::shared_ptr<const CellKernel>>& kernels) const {
+  // Square system: each component of the case's fields is some kernel's rows, once.
+  std::vector<int> owners(m_dofMap.fields().numComponents(), 0);
+  for (const auto& kernel : kernels)
+    for (int c : kernel->ownedComponents()) ++owners[c];
+  for (size_t c = 0; c < owners.size(); ++c)
+    if (owners[c] != 1)
+      return "Assembler: node component " + std::to_string(c) + " is owned by " + std::to_string(owners[c]) +
+             " kernels (must be 1)";
+  return "";
+}
+
+void Assembler::setKernels(std::vector<std::shared_ptr<const CellKernel>> kernels) {
+  const std::string error = checkKernels(kernels);
+  if (!error.empty()) throw std::invalid_argument(error);
+  m_kernels = std::move(kernels);
+  m_kernelError.clear();
+}
+
+void Assembler::setPrescribedValues(const std::vector<PrescribedValue>& values) {
+  m_prescribedDof.assign(values.empty() ? 0 : m_dofMap.overlapMap()->getNodeNumElements(), 0);
+  m_prescribedRows.clear();
+  for (const PrescribedValue& v : values) {
+    if (v.component == kUx || v.component == kUy)
+      throw std::invalid_argument("Assembler: velocity values are boundary conditions, not prescribed values");
+    const LO n = m_dofMap.overlapIndex(v.node);
+    if (n < 0) continue;
+    const LO d = m_dofMap.dof(n, v.component);
+    m_prescribedDof[d] = 1;
+    if (n < m_dofMap.numOwnedNodes()) m_prescribedRows.emplace_back(d, v.value);
   }
 }
 
@@ -64,40 +108,16 @@ void Assembler::setContactWalls(const std::vector<ContactWall>* walls) {
 
 template <typename EvalT>
 void Assembler::assembleCells(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const {
-  if (m_mesh.cellType == CellType::Triangle3)
-    assembleCellsOf<EvalT, 3>(ws, h, applyConstraints);
-  else
-    assembleCellsOf<EvalT, 4>(ws, h, applyConstraints);
-}
-
-template <typename EvalT, int NumNodes>
-void Assembler::assembleCellsOf(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const {
-  constexpr int N = cellDofCount<NumNodes>();
-  using Scalar = typename EvalT::template Scalar<N>;
-  const auto material = materialFor<typename EvalT::ParamScalar>(m_physics.material, h);
-  const auto& constraints = m_bcs.constraints();
-  CellGeometry g;
-  LO dofs[N];
-  Scalar values[N], res[N];
-  for (size_t k = 0; k < m_dofMap.cells().size(); ++k) {
-    computeCellGeometry(m_mesh, m_dofMap.cells()[k], m_physics.kernel.geometry, g);
-    const LO* nodes = m_dofMap.cellNodes(k);
-    m_dofMap.cellDofs(k, dofs);
-    gather(ws, dofs, N, values);
-    std::fill(res, res + N, Scalar(0.0));
-    StressDualPoint* dual = ws.dual ? ws.dual->cells.cell(k, m_dofMap.cells().size()) : nullptr;
-    addFlowResidual(g.rule, g.centroid, g.diameter, m_physics.kernel, material, values, res, dual);
-    if (applyConstraints)
-      for (int a = 0; a < NumNodes; ++a) applyConstraintRows(constraints[nodes[a]], res + EqualOrderLayout::index(a, 0));
-    scatter(ws, dofs, N, dofs, N, res);
-  }
+  if (!m_kernelError.empty()) throw std::logic_error(m_kernelError);
+  const CellLoop loop{m_mesh, m_dofMap, m_physics, m_bcs.constraints(), m_prescribedDof, h, applyConstraints};
+  for (const auto& kernel : m_kernels) kernel->assemble(loop, ws, EvalT{});
 }
 
 template <typename EvalT>
 void Assembler::assembleContact(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const {
-  // A wall node's rows are its two momentum rows; its stencil is u_x, u_y of the node and the
-  // pressures of its wall neighbours, itself and its next neighbour (absent ones: −1).
-  constexpr int N = 5;
+  // A wall node's rows are its two momentum rows; its stencil is the wall's (nodeStencil:
+  // u_x, u_y of the node, the pressures of its previous neighbour, itself and its next one).
+  constexpr int N = ContactWall::kNodeStencilSize;
   using Scalar = typename EvalT::template Scalar<N>;
   using PScalar = typename EvalT::ParamScalar;
   std::vector<FrictionParameters<PScalar>> friction;
@@ -106,15 +126,13 @@ void Assembler::assembleContact(Workset& ws, const SensitivityParameter* h, bool
   const auto& constraints = m_bcs.constraints();
   for (size_t i = 0; i < m_wallNodes.size(); ++i) {
     const WallNodeRef& r = m_wallNodes[i];
-    auto pressureDof = [&](LO n) { return n < 0 ? LO(-1) : m_dofMap.dof(n, kP); };
-    const LO dofs[N] = {m_dofMap.dof(r.node, kUx), m_dofMap.dof(r.node, kUy), pressureDof(r.previous),
-                        pressureDof(r.node), pressureDof(r.next)};
-    Scalar values[N], R[2] = {0.0, 0.0};
+    const LO* dofs = r.dofs;
+    Scalar values[N], R[ContactWall::kNodeRows] = {0.0, 0.0};
     gather(ws, dofs, N, values);
     FrictionDualPoint* dual = ws.dual ? ws.dual->wallNode(i, m_wallNodes.size()) : nullptr;
     (*m_walls)[r.wall].addNodeResidual(r.k, friction[r.wall], values, values + 2, R, dual);
     if (applyConstraints) applyConstraintRows(constraints[r.node], R);
-    scatter(ws, dofs, 2, dofs, N, R);
+    scatter(ws, dofs, ContactWall::kNodeRows, dofs, N, R);
   }
 }
 
@@ -143,6 +161,15 @@ void Assembler::addConstraintRows(const HostView& x, Workset& ws, bool withOffse
       const LO row = m_dofMap.dof(n, nc.constrainedRow);
       if (ws.hasResidual) ws.f(row, 0) += nc.a[0] * x(ux, 0) + nc.a[1] * x(uy, 0) - offset * nc.b;
       if (ws.jacobian) ws.jacobian->sumIntoLocalValues(row, 2, nc.a, cols);
+    }
+  }
+  // Prescribed values of other fields: rows x − g (the cells' contributions were dropped).
+  for (const auto& [d, value] : m_prescribedRows) {
+    if (ws.hasResidual) ws.f(d, 0) += x(d, 0) - offset * value;
+    if (ws.jacobian) {
+      const double one = 1.0;
+      const LO col = m_dofMap.column(d);
+      ws.jacobian->sumIntoLocalValues(d, 1, &one, &col);
     }
   }
 }
@@ -247,8 +274,8 @@ std::vector<CellState> Assembler::cellStates(const Vector& xOwned) const {
   const int npc = m_dofMap.nodesPerCell();
   std::vector<CellState> states(m_dofMap.cells().size());
   CellGeometry g;
-  LO dofs[kNumFields * kMaxNodesPerCell];
-  double values[kNumFields * kMaxNodesPerCell];
+  LO dofs[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
+  double values[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
   for (size_t k = 0; k < m_dofMap.cells().size(); ++k) {
     computeCellGeometry(m_mesh, m_dofMap.cells()[k], geometry, g);
     m_dofMap.cellDofs(k, dofs);

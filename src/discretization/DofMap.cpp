@@ -12,12 +12,12 @@ namespace flowform {
 
 namespace {
 
-/// Fields of every mesh node: the most any cell's layout puts there.
-std::vector<int> nodeFields(const Mesh& mesh) {
+/// Components at every mesh node: the most any cell's layout puts there.
+std::vector<int> nodeFields(const Mesh& mesh, const FieldRegistry& registry) {
   const int npc = nodesPerCell(mesh.cellType);
   std::vector<int> fields(mesh.numNodes(), 0);
   for (GO c = 0; c < mesh.numCells(); ++c)
-    for (int a = 0; a < npc; ++a) fields[mesh.cell(c)[a]] = std::max(fields[mesh.cell(c)[a]], fieldsAtCellNode(mesh.cellType, a));
+    for (int a = 0; a < npc; ++a) fields[mesh.cell(c)[a]] = std::max(fields[mesh.cell(c)[a]], componentsAtCellNode(mesh.cellType, a, registry));
   return fields;
 }
 
@@ -46,8 +46,8 @@ std::vector<size_t> rowLengths(const Mesh& mesh, const std::vector<int>& fields)
 }  // namespace
 
 DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm,
-               const std::vector<std::array<GO, 2>>& couplings)
-    : m_comm(comm) {
+               const std::vector<std::array<GO, 2>>& couplings, const FieldRegistry& registry)
+    : m_comm(comm), m_fields(registry) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: dof map and graph"));
   const int rank = comm->getRank();
   const int npc = flowform::nodesPerCell(mesh.cellType);
@@ -82,7 +82,7 @@ DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm,
     for (int a = 0; a < npc; ++a) m_cellNodes.push_back(m_overlapIndexOfNode[mesh.cell(c)[a]]);
 
   // Dof numbering: each node's fields contiguous, nodes in id order.
-  const std::vector<int> fields = nodeFields(mesh);
+  const std::vector<int> fields = nodeFields(mesh, registry);
   m_globalOffset.assign(mesh.numNodes() + 1, 0);
   for (GO n = 0; n < mesh.numNodes(); ++n) m_globalOffset[n + 1] = m_globalOffset[n] + fields[n];
   m_localOffset.assign(m_overlapNodes.size() + 1, 0);
@@ -141,7 +141,13 @@ DofMap::DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm,
 void DofMap::cellDofs(size_t k, LO* dofs) const {
   const LO* nodes = cellNodes(k);
   for (int a = 0; a < m_nodesPerCell; ++a)
-    for (int f = 0; f < kNumFields; ++f) dofs[EqualOrderLayout::index(a, f)] = dof(nodes[a], f);
+    for (int c = 0; c < EqualOrderLayout::kFieldsPerNode; ++c) dofs[EqualOrderLayout::index(a, c)] = dof(nodes[a], c);
+}
+
+void DofMap::cellDofs(size_t k, const int* components, int n, LO* dofs) const {
+  const LO* nodes = cellNodes(k);
+  for (int a = 0; a < m_nodesPerCell; ++a)
+    for (int i = 0; i < n; ++i) dofs[n * a + i] = dof(nodes[a], components[i]);
 }
 
 GO DofMap::nodeOfGlobalDof(GO dof) const {

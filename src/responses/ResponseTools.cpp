@@ -49,8 +49,8 @@ void cellIntegrals(const Workset& x, const Mesh& mesh, const DofMap& dofMap, con
   const int npc = dofMap.nodesPerCell();
   const Geometry geometry = physics.kernel.geometry;
   CellGeometry g;  // the kernel's own rule, so that the powers match the discrete equations exactly
-  LO dofs[kNumFields * kMaxNodesPerCell];
-  Scalar values[kNumFields * kMaxNodesPerCell];
+  LO dofs[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
+  Scalar values[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
   plasticPower = stabilizationPower = 0.0;
   deadArea = 0.0;
   for (size_t k = 0; k < dofMap.cells().size(); ++k) {

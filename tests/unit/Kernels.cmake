@@ -19,3 +19,8 @@ flowform_unit_test(MovingMeshTest unit/MovingMeshTest.cpp NP 2)
 # The dual linearizations of Newton (stress and slip): values unchanged, fresh = exact tangent,
 # O(step) departure, bounds kept (docs/theory.md §9).
 flowform_unit_test(NewtonDualTest unit/NewtonDualTest.cpp)
+# A second field beside the flow (physics kernels as plug-ins): the flow's rows bitwise
+# unchanged, a linear passive scalar exact (1 and 2 ranks).
+flowform_unit_test(FieldKernelTest unit/FieldKernelTest.cpp)
+flowform_unit_test(FieldKernelTest unit/FieldKernelTest.cpp NP 2)
+set_tests_properties(FieldKernelTest FieldKernelTest_np2 PROPERTIES TIMEOUT 300)

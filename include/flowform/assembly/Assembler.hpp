@@ -1,17 +1,24 @@
-// Global residual, Jacobian and tangents from the element kernels and the contact walls, by
+// Global residual, Jacobian and tangents from the physics kernels and the contact walls, by
 // one templated loop over the evaluation types (assembly/EvaluationTypes.hpp):
-//   cells   — gather the cell's dofs, addFlowResidual, constraint rows, scatter;
-//   walls   — gather a wall node's stencil (u_k, p of k and its wall neighbours), the wall's
-//             node residual (penalty and friction law), constraint rows, scatter;
-// plus the prescribed tractions (constant) and the constraint rows (linear). Cells are this
+//   cells   — for each of the case's kernels in order (assembly/CellKernel.hpp): gather the
+//             components it reads, its element residual, constraint rows, scatter its rows;
+//             a flow-only case has one kernel, the flow (physics/kernels/FlowKernel.hpp);
+//   walls   — gather a wall node's stencil (ContactWall::nodeStencil: u_k, p of k and its
+//             wall neighbours), the wall's node residual (penalty and friction law),
+//             constraint rows, scatter;
+// plus the prescribed tractions (constant) and the constraint rows (linear): the velocity
+// constraints and the prescribed values of other fields (setPrescribedValues). Cells are this
 // rank's partition; contributions to shared rows are summed by the FECrsMatrix / an overlap
 // vector exported with ADD.
 #pragma once
 
+#include <memory>
+#include <string>
 #include <vector>
 
 #include <Teuchos_RCP.hpp>
 
+#include "flowform/assembly/CellKernel.hpp"
 #include "flowform/assembly/EvaluationTypes.hpp"
 #include "flowform/bc/BoundaryConditions.hpp"
 #include "flowform/contact/ContactWall.hpp"
@@ -41,6 +48,21 @@ class Assembler {
 
   /// Contact walls to assemble with the cells (owned by the caller; may be empty).
   void setContactWalls(const std::vector<ContactWall>* walls);
+
+  /// The case's physics kernels, assembled in this order (default: the flow kernel alone).
+  /// Every component of the DofMap's fields must be owned by exactly one kernel.
+  void setKernels(std::vector<std::shared_ptr<const CellKernel>> kernels);
+  const std::vector<std::shared_ptr<const CellKernel>>& kernels() const { return m_kernels; }
+
+  /// A Dirichlet value of a component other than the velocity's (those are boundary
+  /// conditions): at mesh node `node`, row (node, component) becomes x − value.
+  struct PrescribedValue {
+    GO node;
+    int component;
+    double value;
+  };
+  /// Replaces the prescribed values (nodes not on this rank are skipped).
+  void setPrescribedValues(const std::vector<PrescribedValue>& values);
 
   /// F(x) on the owned map. With `applyConstraints` false, the rows of constrained nodes
   /// keep their momentum equations: at a prescribed-velocity node the entry is then the
@@ -82,8 +104,6 @@ class Assembler {
   /// The one loop over this rank's cells, for every evaluation type.
   template <typename EvalT>
   void assembleCells(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const;
-  template <typename EvalT, int NumNodes>
-  void assembleCellsOf(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const;
   /// The one loop over this rank's contact wall nodes, for every evaluation type.
   template <typename EvalT>
   void assembleContact(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const;
@@ -91,18 +111,25 @@ class Assembler {
   /// and v, which gives the rows' derivative a·du when `x` is a direction du.
   void addConstraintRows(const HostView& x, Workset& ws, bool withOffsets = true) const;
   void addTractions(Workset& ws, bool applyConstraints = true) const;
+  /// Empty when `kernels` own every component of the fields exactly once, else why not.
+  std::string checkKernels(const std::vector<std::shared_ptr<const CellKernel>>& kernels) const;
   Workset workset(const Vector& xOverlap, const Vector* dxOverlap, Vector* fOverlap, FECrsMatrix* jacobian) const;
 
-  /// An owned wall node and the overlap indices of it and its wall neighbours (−1: none).
+  /// An owned wall node, its overlap index and the overlap dofs of its stencil (−1: none).
   struct WallNodeRef {
     int wall, k;
-    LO node, previous, next;
+    LO node;
+    LO dofs[ContactWall::kNodeStencilSize];
   };
 
   const Mesh& m_mesh;
   const DofMap& m_dofMap;
   const BoundaryConditions& m_bcs;
   FlowPhysics m_physics;
+  std::vector<std::shared_ptr<const CellKernel>> m_kernels;
+  std::string m_kernelError;  ///< why m_kernels do not own every component once (empty: they do)
+  std::vector<char> m_prescribedDof;                  ///< per overlap dof (empty: none prescribed)
+  std::vector<std::pair<LO, double>> m_prescribedRows;  ///< owned (dof, value): rows x − value
   const std::vector<ContactWall>* m_walls = nullptr;
   std::vector<WallNodeRef> m_wallNodes;
   Teuchos::RCP<Vector> m_xOverlap;   ///< scratch: x imported to the overlap map

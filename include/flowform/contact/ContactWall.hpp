@@ -193,6 +193,19 @@ class ContactWall {
   bool usesFrictionCoefficient() const { return law().usesFrictionCoefficient; }
   bool usesShearFactor() const { return law().usesShearFactor; }
 
+  /// One entry of a wall node's stencil: a wall node (−1: absent neighbour) and a node component.
+  struct StencilEntry {
+    int node, component;
+  };
+  /// Size of a wall node's stencil (the assembler's AD types are sized with it) and of its rows.
+  static constexpr int kNodeStencilSize = 5;
+  static constexpr int kNodeRows = 2;
+  /// The stencil of node k's residual in the order addNodeResidual reads it: u_x, u_y of k
+  /// (its kNodeRows rows, in that order), then p of previous(k), k, next(k).
+  std::array<StencilEntry, kNodeStencilSize> nodeStencil(int k) const {
+    return {{{k, kUx}, {k, kUy}, {previous(k), kP}, {k, kP}, {next(k), kP}}};
+  }
+
   /// The two momentum rows of wall node k: dofs are u_k (2) and the pressures of
   /// previous(k), k, next(k) (an absent neighbour's is ignored). Adds into R[2]. The
   /// friction parameters are `fp` (PScalar: double, or an AD type when ∂/∂ν, ∂/∂m are

@@ -4,9 +4,10 @@
 // among the cells that touch it. The overlapped ("owned plus shared") node list holds every
 // node of this rank's cells, owned nodes first — the layout Tpetra's FECrsGraph expects.
 //
-// Dofs: node n carries numFields(n) fields (from the element layout: 3 at every node of the
-// equal-order elements); its dofs are numbered contiguously after those of nodes 0..n-1,
-//     global dof (n, field) = offset(n) + field,
+// Dofs: node n carries numFields(n) components of the case's fields (FieldRegistry; the
+// element layout says which: all of them at every node of the equal-order elements, 3 for
+// the flow alone); its dofs are numbered contiguously after those of nodes 0..n-1,
+//     global dof (n, component) = offset(n) + component,
 // and the overlap dofs of this rank follow the overlap nodes in the same way. Nothing else
 // in flowform computes a dof index: it asks this map.
 #pragma once
@@ -17,6 +18,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include "flowform/core/TpetraTypes.hpp"
+#include "flowform/discretization/FieldRegistry.hpp"
 #include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
@@ -27,8 +29,11 @@ class DofMap {
   /// owner of i gets j into its overlap and row i gets j's columns (contact walls: the
   /// friction at a wall node depends on the pressure at its neighbours along the wall).
   /// Both nodes of a pair must share a cell, so the global row lengths do not change.
+  /// `fields` are the case's unknowns (default: the flow's).
   DofMap(const Mesh& mesh, const Teuchos::RCP<const Comm>& comm,
-         const std::vector<std::array<GO, 2>>& couplings = {});
+         const std::vector<std::array<GO, 2>>& couplings = {}, const FieldRegistry& fields = FieldRegistry::flow());
+
+  const FieldRegistry& fields() const { return m_fields; }
 
   const Teuchos::RCP<const Comm>& comm() const { return m_comm; }
   const Teuchos::RCP<const Map>& ownedMap() const { return m_ownedMap; }      ///< dofs
@@ -56,9 +61,13 @@ class DofMap {
   /// Overlap-local dof of (overlap node `n`, field); the owned map's local index too when n
   /// is owned (owned nodes come first in both).
   LO dof(LO n, int field) const { return m_localOffset[n] + field; }
-  /// The overlap dofs of this rank's cell k in the element layout's order (the cell gather's
-  /// addresses): dofs[EqualOrderLayout::index(a, field)] = dof(cellNodes(k)[a], field).
+  /// The overlap dofs of the flow's components of this rank's cell k in the flow kernel's
+  /// element layout (the cell gather's addresses): dofs[EqualOrderLayout::index(a, c)] =
+  /// dof(cellNodes(k)[a], c), c = u_x, u_y, p.
   void cellDofs(size_t k, LO* dofs) const;
+  /// The same for the node components `components[0..n)` (a kernel's element vector,
+  /// node-major): dofs[n a + i] = dof(cellNodes(k)[a], components[i]).
+  void cellDofs(size_t k, const int* components, int n, LO* dofs) const;
   /// Global dof id of (mesh node `node`, field).
   GO globalDof(GO node, int field) const { return m_globalOffset[node] + field; }
   /// Fields carried by mesh node `node`.
@@ -77,6 +86,7 @@ class DofMap {
 
  private:
   Teuchos::RCP<const Comm> m_comm;
+  FieldRegistry m_fields;
   int m_nodesPerCell = 0;
   std::vector<int> m_cellPart;
   std::vector<GO> m_cells;

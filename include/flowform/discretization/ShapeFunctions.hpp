@@ -10,7 +10,13 @@
 
 namespace flowform {
 
-constexpr int kMaxNodesPerCell = 4;
+/// The most nodes a cell of any element type has (kCellTypes): sizes per-cell arrays.
+constexpr int maxNodesPerCell() {
+  int n = 0;
+  for (CellType type : kCellTypes) n = nodesPerCell(type) > n ? nodesPerCell(type) : n;
+  return n;
+}
+constexpr int kMaxNodesPerCell = maxNodesPerCell();
 constexpr int kMaxQuadraturePoints = 4;
 
 /// Values, physical gradients and weights (|det J| × reference weight) of the shape functions

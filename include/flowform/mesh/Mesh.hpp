@@ -14,7 +14,9 @@ namespace flowform {
 
 enum class CellType { Triangle3, Quadrilateral4 };
 
-inline int nodesPerCell(CellType type) { return type == CellType::Triangle3 ? 3 : 4; }
+constexpr int nodesPerCell(CellType type) { return type == CellType::Triangle3 ? 3 : 4; }
+/// Every element type flowform reads (the bound of per-cell arrays follows from it).
+inline constexpr CellType kCellTypes[] = {CellType::Triangle3, CellType::Quadrilateral4};
 inline const char* cellTypeName(CellType type) {
   return type == CellType::Triangle3 ? "Triangle" : "Quadrilateral";
 }
