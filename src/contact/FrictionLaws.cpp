@@ -28,11 +28,6 @@ const std::vector<FrictionLawInfo>& frictionLaws() {
   return laws;
 }
 
-int frictionLawIndex(const std::string& name) {
-  const auto& laws = frictionLaws();
-  for (size_t i = 0; i < laws.size(); ++i)
-    if (laws[i].name == name) return static_cast<int>(i);
-  return -1;
-}
+int frictionLawIndex(const std::string& name) { return indexByName(frictionLaws(), name); }
 
 }  // namespace flowform

@@ -22,21 +22,6 @@ std::vector<MaterialLawInfo> collect(MaterialLawList<Laws...>) {
   return {infoOf<Laws>()...};
 }
 
-template <typename... Laws>
-bool dispatchIsNewtonian(MaterialLawList<Laws...>, const MaterialParameters<double>& m) {
-  bool out = false;
-  int i = 0;
-  (void)((i++ == m.law ? (out = Laws::isNewtonian(m.values.data()), true) : false) || ...);
-  return out;
-}
-
-template <typename... Laws>
-double dispatchNewtonianRateConstant(MaterialLawList<Laws...>, const MaterialParameters<double>& m) {
-  double out = 1.0;
-  int i = 0;
-  (void)((i++ == m.law ? (out = Laws::newtonianRateConstant(m.values.data()), true) : false) || ...);
-  return out;
-}
 
 Teuchos::RCP<const Teuchos::ParameterEntryValidator> validatorOf(MaterialParameterInfo::Range range) {
   switch (range) {
@@ -77,18 +62,9 @@ const std::vector<MaterialLawInfo>& materialLaws() {
   return laws;
 }
 
-int materialLawIndex(const std::string& name) {
-  const auto& laws = materialLaws();
-  for (size_t i = 0; i < laws.size(); ++i)
-    if (laws[i].name == name) return static_cast<int>(i);
-  return -1;
-}
+int materialLawIndex(const std::string& name) { return indexByName(materialLaws(), name); }
 
-std::string materialLawNames() {
-  std::string list;
-  for (const MaterialLawInfo& law : materialLaws()) list += (list.empty() ? "'" : ", '") + law.name + "'";
-  return list;
-}
+std::string materialLawNames() { return quotedNames(materialLaws()); }
 
 Teuchos::RCP<const Teuchos::ParameterList> validMaterialParameters(int law) {
   static std::vector<Teuchos::RCP<const Teuchos::ParameterList>> lists;
@@ -136,13 +112,21 @@ MaterialParameters<double> materialFromParameters(const Teuchos::ParameterList& 
   return m;
 }
 
-bool isNewtonian(const MaterialParameters<double>& m) { return dispatchIsNewtonian(RegisteredMaterialLaws{}, m); }
+bool isNewtonian(const MaterialParameters<double>& m) {
+  bool out = false;
+  visitByIndex(RegisteredMaterialLaws{}, m.law,
+               [&](auto tag) { out = decltype(tag)::type::isNewtonian(m.values.data()); });
+  return out;
+}
 
 MaterialParameters<double> newtonianPredictor(const MaterialParameters<double>& m) {
   MaterialParameters<double> p;
   p.law = kMaterialLawIndex<PowerLaw>;
   p.values[PowerLaw::kYieldStress] = 0.0;
-  p.values[PowerLaw::kRateConstant] = dispatchNewtonianRateConstant(RegisteredMaterialLaws{}, m);
+  double gamma = 1.0;
+  visitByIndex(RegisteredMaterialLaws{}, m.law,
+               [&](auto tag) { gamma = decltype(tag)::type::newtonianRateConstant(m.values.data()); });
+  p.values[PowerLaw::kRateConstant] = gamma;
   p.values[PowerLaw::kRateExponent] = 1.0;
   p.cutoff = m.cutoff;
   return p;

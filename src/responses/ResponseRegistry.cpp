@@ -65,12 +65,7 @@ const std::vector<ResponseTypeInfo>& responseTypes() {
   return types;
 }
 
-int responseTypeIndex(const std::string& name) {
-  const auto& types = responseTypes();
-  for (size_t i = 0; i < types.size(); ++i)
-    if (types[i].name == name) return static_cast<int>(i);
-  return -1;
-}
+int responseTypeIndex(const std::string& name) { return indexByName(responseTypes(), name); }
 
 std::string responseTypeNames(bool ResponseTypeInfo::*trait, const std::string& separator) {
   std::string names;

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "flowform/core/TypeList.hpp"
 #include "flowform/responses/BoundaryExtent.hpp"
 #include "flowform/responses/BoundaryForce.hpp"
 #include "flowform/responses/BoundaryPower.hpp"
@@ -34,7 +35,7 @@
 namespace flowform {
 
 template <typename... Types>
-struct ResponseList {};
+using ResponseList = TypeList<Types...>;
 
 /// The first is the default of "Type".
 using RegisteredResponses =

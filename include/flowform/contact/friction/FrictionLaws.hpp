@@ -13,11 +13,12 @@
 #include "flowform/contact/friction/Norton.hpp"
 #include "flowform/contact/friction/Orowan.hpp"
 #include "flowform/contact/friction/Tresca.hpp"
+#include "flowform/core/TypeList.hpp"
 
 namespace flowform {
 
 template <typename... Laws>
-struct FrictionLawList {};
+using FrictionLawList = TypeList<Laws...>;
 
 /// The first is the default of "Friction Law".
 using RegisteredFrictionLaws = FrictionLawList<CoulombFriction, TrescaFriction, OrowanFriction, NortonFriction, NoFriction>;
@@ -31,22 +32,16 @@ const std::vector<FrictionLawInfo>& frictionLaws();
 /// Index of the law called `name`, −1 when there is none.
 int frictionLawIndex(const std::string& name);
 
-namespace detail {
-template <typename Scalar, typename PScalar, typename... Laws>
-FrictionForce<Scalar> dispatchFriction(FrictionLawList<Laws...>, int law, const FrictionNodeData<Scalar>& d,
-                                       const FrictionParameters<PScalar>& fp, const FrictionSettings& s) {
-  FrictionForce<Scalar> out{Scalar(0.0), FrictionBranch::NoFriction};
-  int i = 0;
-  (void)((i++ == law ? (out = Laws::template force<Scalar, PScalar>(d, fp, s), true) : false) || ...);
-  return out;
-}
-}  // namespace detail
-
 /// g_k and its branch by law `law` (an index of frictionLaws()).
 template <typename Scalar, typename PScalar>
 FrictionForce<Scalar> frictionForce(int law, const FrictionNodeData<Scalar>& d, const FrictionParameters<PScalar>& fp,
                                     const FrictionSettings& s) {
-  return detail::dispatchFriction(RegisteredFrictionLaws{}, law, d, fp, s);
+  FrictionForce<Scalar> out{Scalar(0.0), FrictionBranch::NoFriction};
+  visitByIndex(RegisteredFrictionLaws{}, law, [&](auto tag) {
+    using Law = typename decltype(tag)::type;
+    out = Law::template force<Scalar, PScalar>(d, fp, s);
+  });
+  return out;
 }
 
 }  // namespace flowform

@@ -12,13 +12,14 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "flowform/core/TypeList.hpp"
 #include "flowform/physics/materials/PowerLaw.hpp"
 #include "flowform/physics/materials/SellarsTegart.hpp"
 
 namespace flowform {
 
 template <typename... Laws>
-struct MaterialLawList {};
+using MaterialLawList = TypeList<Laws...>;
 
 /// The first is the default of Material/Law.
 using RegisteredMaterialLaws = MaterialLawList<PowerLaw, SellarsTegart>;
@@ -60,15 +61,6 @@ constexpr int lawIndex(MaterialLawList<Laws...>) {
   ((std::is_same_v<Law, Laws> ? found = i++ : i++), ...);
   return found;
 }
-
-template <typename Scalar, typename PScalar, typename... Laws>
-Scalar dispatchFlowStress(MaterialLawList<Laws...>, const Scalar& eReg, const MaterialParameters<PScalar>& m) {
-  Scalar out(0.0);
-  int i = 0;
-  (void)((i++ == m.law ? (out = Laws::template flowStress<Scalar, PScalar>(eReg, m.values.data()), true) : false) ||
-         ...);
-  return out;
-}
 }  // namespace detail
 
 /// The index of law `Law` in RegisteredMaterialLaws.
@@ -78,7 +70,12 @@ inline constexpr int kMaterialLawIndex = detail::lawIndex<Law>(RegisteredMateria
 /// σ̄(e_r) by the law of `m`.
 template <typename Scalar, typename PScalar>
 Scalar lawFlowStress(const Scalar& eReg, const MaterialParameters<PScalar>& m) {
-  return detail::dispatchFlowStress(RegisteredMaterialLaws{}, eReg, m);
+  Scalar out(0.0);
+  visitByIndex(RegisteredMaterialLaws{}, m.law, [&](auto tag) {
+    using Law = typename decltype(tag)::type;
+    out = Law::template flowStress<Scalar, PScalar>(eReg, m.values.data());
+  });
+  return out;
 }
 
 }  // namespace flowform
