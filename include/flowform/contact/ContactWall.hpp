@@ -31,6 +31,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "flowform/contact/ContactWallSettings.hpp"
 #include "flowform/contact/friction/FrictionLaws.hpp"
 #include "flowform/core/Types.hpp"
 #include "flowform/discretization/CellGeometry.hpp"
@@ -38,28 +39,6 @@
 #include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
-
-struct ContactWallSettings {
-  int law = 0;                       ///< index in frictionLaws()
-  double frictionCoefficient = 0.0;  ///< ν
-  double shearFactor = 0.0;          ///< m
-  FrictionSettings friction;         ///< the law's own constants
-  double normalPenalty = 1e3;        ///< κ_n
-  double tangentialPenalty = 10.0;   ///< κ_t
-  double penaltyViscosity = 0.0;     ///< fixed μ of the penalties; 0: the local cell viscosity
-  bool initiallyActive = true;
-  /// Released Nodes = Free Surface: the wall's released tail is a free surface that leaves the
-  /// tool (freesurface/FreeSurface.hpp); upstreamGroup names the group at its upstream end.
-  bool releasedFreeSurface = false;
-  bool neverReleased = false;  ///< Released Nodes = Never: bilateral, the status loop releases no node
-  std::string upstreamGroup;
-  /// Convex Corners = Closed: the wall's nodes at convex tool corners are held (active, never
-  /// released), so no material crosses the wall's segment there (docs/contact.md).
-  bool closedCorners = false;
-  /// Coulomb Normal Force = Contact Force: the Coulomb bound is ν max(α_n u·n, 0) (the penalty's
-  /// normal force) instead of ν ∫ N_k p⁺ ds.
-  bool coulombOnContactForce = false;
-};
 
 /// What a status update decided: the wall node to change, or none (index −1).
 struct StatusChange {
