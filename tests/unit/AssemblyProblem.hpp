@@ -104,6 +104,21 @@ struct Problem {
   RCP<Vector> vector() const { return Teuchos::rcp(new Vector(dofMap->ownedMap())); }
 };
 
+/// J v and its central difference (F(x + δv) − F(x − δv)) / (2δ) for the assembler's residual at
+/// x, into `jv` and `fd` (owned vectors of x's map).
+inline void jacobianAndDifference(const Assembler& assembler, const Vector& x, const Vector& v, double delta,
+                                  Vector& jv, Vector& fd) {
+  auto J = assembler.createJacobian();
+  assembler.jacobian(x, *J);
+  J->apply(v, jv);
+  Vector xp(x.getMap()), xm(x.getMap()), fm(x.getMap());
+  xp.update(1.0, x, delta, v, 0.0);
+  xm.update(1.0, x, -delta, v, 0.0);
+  assembler.residual(xp, fd);
+  assembler.residual(xm, fm);
+  fd.update(-1.0 / (2 * delta), fm, 1.0 / (2 * delta));
+}
+
 inline FlowPhysics makePhysics(Geometry geometry, const MaterialParameters<double>& material, double beta, double fx,
                         double fy) {
   FlowPhysics p;

@@ -241,20 +241,11 @@ TEUCHOS_UNIT_TEST(Assembly, JacobianMatchesDirectionalFiniteDifferences) {
     for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric}) {
       Problem problem(makeMesh(type, 6, 4, 0.2, 0.0, 2.0, 1.0, 0.2, 0.3), generalConditions(),
                       makePhysics(geometry, kNonlinear, 0.1, 0.3, -0.7), comm);
-      auto x = problem.vector(), v = problem.vector(), jv = problem.vector();
-      auto xp = problem.vector(), xm = problem.vector(), fp = problem.vector(), fm = problem.vector();
+      auto x = problem.vector(), v = problem.vector(), jv = problem.vector(), fp = problem.vector();
       interpolate(problem.mesh, *problem.dofMap, kSmooth, *x);
       problem.bcs->imposeOnSolution(*x);
       interpolate(problem.mesh, *problem.dofMap, direction, *v);
-      auto J = problem.assembler->createJacobian();
-      problem.assembler->jacobian(*x, *J);
-      J->apply(*v, *jv);
-      const double delta = 1e-6;
-      xp->update(1.0, *x, delta, *v, 0.0);
-      xm->update(1.0, *x, -delta, *v, 0.0);
-      problem.assembler->residual(*xp, *fp);
-      problem.assembler->residual(*xm, *fm);
-      fp->update(-1.0 / (2 * delta), *fm, 1.0 / (2 * delta));  // the FD derivative
+      jacobianAndDifference(*problem.assembler, *x, *v, 1e-6, *jv, *fp);
       fp->update(-1.0, *jv, 1.0);
       const double err = fp->normInf(), scale = jv->normInf();
       out << caseName(type, geometry, kNonlinear) << ": |Jv − FD|∞ / |Jv|∞ = " << err / scale << "\n";

@@ -216,20 +216,11 @@ TEUCHOS_UNIT_TEST(FieldKernel, FlowAdvectedJacobianMatchesFiniteDifferences) {
     for (bool velocityOnly : {false, true}) {
       TwoFieldProblem problem(makeMesh(type, 6, 4, 0.2, 0.0, 2.0, 1.0, 0.2, 0.3), generalConditions(),
                               makePhysics(Geometry::PlaneStrain, kNonlinear, 0.1, 0.3, -0.7), comm, AdvectingVelocity::Flow);
-      auto x = problem.vector(), v = problem.vector(), jv = problem.vector();
-      auto xp = problem.vector(), xm = problem.vector(), fp = problem.vector(), fm = problem.vector();
+      auto x = problem.vector(), v = problem.vector(), jv = problem.vector(), fp = problem.vector();
       interpolate(problem.mesh, *problem.dofMap, kSmooth, scalar, *x);
       problem.bcs->imposeOnSolution(*x);
       interpolate(problem.mesh, *problem.dofMap, direction, velocityOnly ? none : scalarDirection, *v);
-      auto J = problem.assembler->createJacobian();
-      problem.assembler->jacobian(*x, *J);
-      J->apply(*v, *jv);
-      const double delta = 1e-6;
-      xp->update(1.0, *x, delta, *v, 0.0);
-      xm->update(1.0, *x, -delta, *v, 0.0);
-      problem.assembler->residual(*xp, *fp);
-      problem.assembler->residual(*xm, *fm);
-      fp->update(-1.0 / (2 * delta), *fm, 1.0 / (2 * delta));  // the FD derivative
+      jacobianAndDifference(*problem.assembler, *x, *v, 1e-6, *jv, *fp);
       // The c rows of J v alone: their size shows the u columns are there.
       double cRows = 0.0;
       {
