@@ -100,7 +100,7 @@ void Assembler::setPrescribedValues(const std::vector<PrescribedValue>& values) 
     if (n < 0) continue;
     const LO d = m_dofMap.dof(n, v.component);
     m_prescribedDof[d] = 1;
-    if (n < m_dofMap.numOwnedNodes()) m_prescribedRows.emplace_back(d, v.value);
+    if (m_dofMap.ownsNode(n)) m_prescribedRows.emplace_back(d, v.value);
   }
 }
 
