@@ -22,7 +22,6 @@ std::vector<MaterialLawInfo> collect(MaterialLawList<Laws...>) {
   return {infoOf<Laws>()...};
 }
 
-
 Teuchos::RCP<const Teuchos::ParameterEntryValidator> validatorOf(MaterialParameterInfo::Range range) {
   switch (range) {
     case MaterialParameterInfo::Range::Positive: return positive();
@@ -46,11 +45,9 @@ void checkOwnParameters(const Teuchos::ParameterList& material, int law) {
     if (declares(law, name)) continue;
     for (size_t other = 0; other < laws.size(); ++other)
       if (declares(static_cast<int>(other), name)) {
-        std::string own;
-        for (const MaterialParameterInfo& p : laws[law].parameters) own += ", '" + std::string(p.name) + "'";
         throw InputError("Material/" + name + " is a parameter of material law '" + laws[other].name +
-                         "', but the case's Material/Law is '" + laws[law].name + "'; its parameters: 'Law'" + own +
-                         ", 'Strain Rate Cutoff'");
+                         "', but the case's Material/Law is '" + laws[law].name + "'; its parameters: 'Law', " +
+                         quotedNames(laws[law].parameters) + ", 'Strain Rate Cutoff'");
       }
   }
 }
@@ -67,8 +64,9 @@ int materialLawIndex(const std::string& name) { return indexByName(materialLaws(
 std::string materialLawNames() { return quotedNames(materialLaws()); }
 
 Teuchos::RCP<const Teuchos::ParameterList> validMaterialParameters(int law) {
-  static std::vector<Teuchos::RCP<const Teuchos::ParameterList>> lists;
-  if (lists.empty()) {
+  // One list per law, built once (as validListOnce does for a class's single list).
+  static const std::vector<Teuchos::RCP<const Teuchos::ParameterList>> lists = [] {
+    std::vector<Teuchos::RCP<const Teuchos::ParameterList>> made;
     std::string doc = "the material law:";
     Teuchos::Array<std::string> names;
     for (const MaterialLawInfo& info : materialLaws()) {
@@ -83,9 +81,10 @@ Teuchos::RCP<const Teuchos::ParameterList> validMaterialParameters(int law) {
       for (const MaterialParameterInfo& p : info.parameters)
         valid->set(p.name, p.defaultValue, p.doc, validatorOf(p.range));
       valid->set("Strain Rate Cutoff", 1e-3, "e0 > 0: e_r = sqrt(e² + e0²) [1/time]", positive());
-      lists.push_back(valid);
+      made.push_back(valid);
     }
-  }
+    return made;
+  }();
   return lists.at(law);
 }
 
