@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <stdexcept>
+#include <string>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
@@ -42,22 +43,6 @@ std::vector<ResponseTypeInfo> collect(ResponseList<Types...>) {
                            Types::kReactionBased, Types::kAdaptivityTarget, Types::kDifferentiable}...};
 }
 
-using Declare = void (*)(Teuchos::ParameterList&);
-template <typename... Types>
-std::vector<Declare> declarations(ResponseList<Types...>) {
-  return {&Types::declareParameters...};
-}
-
-using Make = std::shared_ptr<const ResponseFunction> (*)(const Teuchos::ParameterList&);
-template <typename T>
-std::shared_ptr<const ResponseFunction> make(const Teuchos::ParameterList& p) {
-  return std::make_shared<RegisteredResponse<T>>(p);
-}
-template <typename... Types>
-std::vector<Make> makers(ResponseList<Types...>) {
-  return {&make<Types>...};
-}
-
 }  // namespace
 
 const std::vector<ResponseTypeInfo>& responseTypes() {
@@ -92,10 +77,9 @@ void buildValidResponseParameters(const ValidList& list) {
   // The union of the types' entries, in the order first declared; each entry's doc says
   // which types read it and how ("Boundary Force, Mean Pressure: the group the tool acts on; ...").
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> uses;  // entry -> (doc, types)
-  const std::vector<Declare> declare = declarations(RegisteredResponses{});
-  for (size_t i = 0; i < declare.size(); ++i) {
+  for (size_t i = 0; i < types.size(); ++i) {
     Teuchos::ParameterList own;
-    declare[i](own);
+    declareResponseParameters(static_cast<int>(i), own);
     for (auto it = own.begin(); it != own.end(); ++it) {
       const std::string& name = own.name(it);
       if (!valid.isParameter(name)) valid.setEntry(name, own.entry(it));
@@ -119,9 +103,18 @@ Teuchos::RCP<const Teuchos::ParameterList> validResponseParameters() {
   return validListOnce<buildValidResponseParameters>("Response");
 }
 
+void declareResponseParameters(int type, Teuchos::ParameterList& list) {
+  if (!visitByIndex(RegisteredResponses{}, type, [&](auto tag) { decltype(tag)::type::declareParameters(list); }))
+    throw std::out_of_range("declareResponseParameters: no response type " + std::to_string(type));
+}
+
 std::shared_ptr<const ResponseFunction> makeResponse(int type, const Teuchos::ParameterList& validated) {
-  static const std::vector<Make> make = makers(RegisteredResponses{});
-  return make.at(static_cast<size_t>(type))(validated);
+  std::shared_ptr<const ResponseFunction> response;
+  if (!visitByIndex(RegisteredResponses{}, type, [&](auto tag) {
+        response = std::make_shared<RegisteredResponse<typename decltype(tag)::type>>(validated);
+      }))
+    throw std::out_of_range("makeResponse: no response type " + std::to_string(type));
+  return response;
 }
 
 }  // namespace flowform

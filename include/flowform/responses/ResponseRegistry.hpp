@@ -70,6 +70,10 @@ class ResponseFunction {
   virtual bool reactionWeights(const Mesh& mesh, const DofMap& dofMap, Geometry geometry, Vector& c) const = 0;
 };
 
+/// Declares the entries of response type `type` (an index of responseTypes()) into `list`:
+/// the type's own declareParameters (std::out_of_range for an index that is no type).
+void declareResponseParameters(int type, Teuchos::ParameterList& list);
+
 /// The response of type `type` (an index of responseTypes()) from its validated sublist.
 std::shared_ptr<const ResponseFunction> makeResponse(int type, const Teuchos::ParameterList& validated);
 
