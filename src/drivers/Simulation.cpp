@@ -5,6 +5,7 @@
 
 #include "flowform/contact/WallStates.hpp"
 #include "flowform/core/Budget.hpp"
+#include "flowform/core/Clock.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/drivers/CaseParameters.hpp"
 #include "flowform/drivers/OutputFields.hpp"
@@ -22,10 +23,6 @@ namespace flowform {
 namespace {
 
 using Teuchos::ParameterList;
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// The validated copy of a case (validateCase sets the defaults of its fixed sublists).
 ParameterList validated(const ParameterList& caseParams) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "flowform/core/Budget.hpp"
+#include "flowform/core/Clock.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/mesh/SizeField.hpp"
 
@@ -153,7 +154,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
             << ", estimated relative error " << relative << " (target " << tolerance << ")\n";
       met = met && relative <= tolerance;
     }
-    entry["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    entry["seconds"] = secondsSince(start);
     cycles.push_back(entry);
     const double resolution = sim->problem().parameters().sublist("Solver").get<double>("Absolute Residual Tolerance");
     for (const std::string& name : targets) {
@@ -189,7 +190,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
   nlohmann::json block = {{"cycles", cycles},
                           {"target_met", met},
                           {"target_relative_error", tolerance},
-                          {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count()}};
+                          {"seconds", secondsSince(loopStart)}};
   if (!met) {
     block["message"] = why;
     sim->setNotMet(why);

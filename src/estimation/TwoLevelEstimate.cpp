@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "flowform/core/Budget.hpp"
+#include "flowform/core/Clock.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/discretization/SolutionTransfer.hpp"
 #include "flowform/estimation/ResponseAdjoint.hpp"
@@ -86,7 +87,7 @@ ErrorEstimate twoLevelEstimate(const CaseRun& coarseRun, const CaseRunFactory& m
   }
   fine.startFrom(coarse);
   fineRun->run();
-  estimate.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  estimate.seconds = secondsSince(start);
   if (fineRun->exitStatus() != 0) {
     estimate.failure = "the solve on the refined mesh (" + std::to_string(estimate.refinedDofs) +
                        " dofs) did not converge: " + fine.report().message;
@@ -116,7 +117,7 @@ ErrorEstimate twoLevelEstimate(const CaseRun& coarseRun, const CaseRunFactory& m
                         estimate.sensitivities);
   }
   estimate.estimated = true;
-  estimate.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  estimate.seconds = secondsSince(start);
   return estimate;
 }
 

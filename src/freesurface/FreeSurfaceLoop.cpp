@@ -7,13 +7,14 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "flowform/core/InputError.hpp"
 #include "flowform/core/Budget.hpp"
-#include "flowform/core/NumberRange.hpp"
+#include "flowform/core/Clock.hpp"
+#include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
+#include "flowform/core/NumberRange.hpp"
+#include "flowform/core/ValidList.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
 #include "flowform/solvers/AndersonAcceleration.hpp"
-#include "flowform/core/ValidList.hpp"
 
 namespace flowform {
 
@@ -238,7 +239,7 @@ FreeSurfaceReport FreeSurfaceLoop::run(const Mesh& mesh, const DofMap& dofMap, c
       break;
     }
   }
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.seconds = secondsSince(start);
   if (report.converged)
     log() << "flowform: free surfaces converged in " << report.iterations << " update(s), "
           << report.newtonIterations << " Newton iterations\n";

@@ -3,15 +3,12 @@
 #include <Teuchos_TimeMonitor.hpp>
 
 #include "flowform/core/Budget.hpp"
+#include "flowform/core/Clock.hpp"
 #include "flowform/io/JsonSummary.hpp"
 
 namespace flowform {
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 double timerSeconds(const std::string& name) {
   auto t = Teuchos::TimeMonitor::lookupCounter(name);

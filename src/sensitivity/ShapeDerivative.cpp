@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "flowform/core/Clock.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/freesurface/UpdateLinearization.hpp"
 #include "flowform/problem/Problem.hpp"
@@ -59,7 +60,7 @@ ShapeDerivative totalShapeDerivative(Problem& problem, const Sensitivity& sensit
       out.responses[name][parameters[p].name] = total;
     }
   out.computed = true;
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = secondsSince(start);
   log() << "sensitivity: total derivatives through the free surfaces (" << nb << " surface unknowns, "
         << "spectral radius of the linearized update " << out.contraction << ", " << out.seconds << " s)\n";
   for (const auto& [name, byParameter] : out.responses)
