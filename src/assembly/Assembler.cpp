@@ -116,7 +116,8 @@ void Assembler::assembleCells(Workset& ws, const SensitivityParameter* h, bool a
 template <typename EvalT>
 void Assembler::assembleContact(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const {
   // A wall node's rows are its two momentum rows; its stencil is the wall's (nodeStencil:
-  // u_x, u_y of the node, the pressures of its previous neighbour, itself and its next one).
+  // u_x, u_y of the node, the pressures of its previous neighbour, itself and its next one,
+  // the neighbours' velocities).
   constexpr int N = ContactWall::kNodeStencilSize;
   using Scalar = typename EvalT::template Scalar<N>;
   using PScalar = typename EvalT::ParamScalar;
@@ -130,7 +131,7 @@ void Assembler::assembleContact(Workset& ws, const SensitivityParameter* h, bool
     Scalar values[N], R[ContactWall::kNodeRows] = {0.0, 0.0};
     gather(ws, dofs, N, values);
     FrictionDualPoint* dual = ws.dual ? ws.dual->wallNode(i, m_wallNodes.size()) : nullptr;
-    (*m_walls)[r.wall].addNodeResidual(r.k, friction[r.wall], values, values + 2, R, dual);
+    (*m_walls)[r.wall].addNodeResidual(r.k, friction[r.wall], values, R, dual);
     if (applyConstraints) applyConstraintRows(constraints[r.node], R);
     scatter(ws, dofs, ContactWall::kNodeRows, dofs, N, R);
   }

@@ -124,6 +124,7 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   // InputError for a missing group, a zero-length segment, a branched group.
   m_curve = buildBoundaryCurve(mesh, mesh.boundary(group));
   m_active.assign(m_curve.nodes.size(), m_settings.initiallyActive);
+  m_inContact.assign(m_curve.nodes.size(), m_settings.initiallyActive);
   m_changes.assign(m_curve.nodes.size(), 0);
   m_viscosity.assign(m_curve.nodes.size(), 1.0);
   m_flowStress.assign(m_curve.nodes.size(), 1.0);
@@ -170,6 +171,7 @@ double ContactWall::violation(int k, const std::vector<double>& p, const std::ve
                               double pressureTolerance, double penetrationTolerance) const {
   constexpr double kNone = -std::numeric_limits<double>::infinity();
   if (held(k) || (m_active[k] != kFree && m_settings.neverReleased)) return kNone;  // no status change
+  if (m_active[k] == kComplementary) return kNone;  // decided inside Newton
   const auto& n = m_curve.normals[k];
   const double un = u[k][0] * n[0] + u[k][1] * n[1];
   if (m_active[k] == kSelfDeciding) return -un - penetrationTolerance;  // it leaves the tool: free
@@ -278,9 +280,49 @@ void ContactWall::takeStatusesFrom(const ContactWall& other, const std::vector<s
       for (const auto& corner : m_cornerNormals[k])
         active = active && v[0] * corner[0] + v[1] * corner[1] > penetrationTolerance;
     }
-    m_active[k] = active || held(k) ? kActive : kFree;
+    if (m_active[k] == kComplementary)
+      m_inContact[k] = active;  // its own complementarity decides from here
+    else
+      m_active[k] = active || held(k) ? kActive : kFree;
   }
   resetChangeCounts();
+}
+
+int ContactWall::enterComplementarity() {
+  m_complementarity = true;
+  if (m_settings.releasedFreeSurface || m_settings.neverReleased) return 0;
+  int count = 0;
+  for (int k = 0; k < numNodes(); ++k) {
+    if (held(k) || !m_cornerNormals[k].empty() || m_active[k] == kComplementary) continue;
+    m_inContact[k] = isActive(k);
+    m_active[k] = kComplementary;
+    ++count;
+  }
+  return count;
+}
+
+int ContactWall::readContact(const std::vector<std::array<double, 2>>& u) {
+  int changed = 0;
+  for (int k = 0; k < numNodes(); ++k) {
+    if (m_active[k] != kComplementary) continue;
+    const auto& n = m_curve.normals[k];
+    const char pressing = u[k][0] * n[0] + u[k][1] * n[1] > 0.0;
+    changed += pressing != m_inContact[k];
+    m_inContact[k] = pressing;
+  }
+  return changed;
+}
+
+std::array<double, ContactWall::kNodeStencilSize> ContactWall::stencilValues(
+    int k, const std::vector<double>& p, const std::vector<std::array<double, 2>>& u) const {
+  std::array<double, kNodeStencilSize> v{};
+  const auto stencil = nodeStencil(k);
+  for (int i = 0; i < kNodeStencilSize; ++i) {
+    const int j = stencil[i].node;
+    if (j < 0) continue;
+    v[i] = stencil[i].component == kP ? p[j] : u[j][stencil[i].component == kUx ? 0 : 1];
+  }
+  return v;
 }
 
 }  // namespace flowform

@@ -32,9 +32,8 @@ std::vector<FrictionBranch> branchesOf(const ContactWall& wall, const std::vecto
                                          const std::vector<std::array<double, 2>>& u) {
   std::vector<FrictionBranch> b(wall.numNodes());
   for (int k = 0; k < wall.numNodes(); ++k) {
-    auto pressure = [&](int j) { return j < 0 ? 0.0 : p[j]; };
-    const double pk[3] = {pressure(wall.previous(k)), p[k], pressure(wall.next(k))};
-    wall.tangentialForce(k, wall.frictionParameters(), u[k].data(), pk, &b[k]);
+    const auto v = wall.stencilValues(k, p, u);
+    wall.tangentialForce(k, wall.frictionParameters(), v.data(), &b[k]);
   }
   return b;
 }

@@ -148,11 +148,14 @@ static void buildValidCaseParameters(const ValidList& valid) {
                  intInRange(100, 100000000));
   ParameterList& contact = valid->sublist("Contact", false, "the contact-status loop (docs/theory.md §2)");
   Teuchos::setStringToIntegralParameter<int>(
-      "Status Update", "Certain Iterate",
-      "Certain Iterate: after a change, Newton iterates one step at a time and the next change is read from the "
+      "Status Update", "Complementarity",
+      "Complementarity: after the first solve, every wall node that may change its status decides its contact "
+      "inside Newton (normal force alpha_n max(u.n, 0), friction up to the interpolated limit of the contact zone; "
+      "docs/contact.md); the nodes at open convex tool corners and on walls whose released nodes are a free surface "
+      "keep statuses, decided as Certain Iterate does; Certain Iterate: after a change, Newton iterates one step at a time and the next change is read from the "
       "first iterate on which it is certain (the same decision for every state within the last step of it; "
       "docs/contact.md); Converged State: the paper's loop, every change read from a re-solved state",
-      Teuchos::tuple<std::string>("Certain Iterate", "Converged State"), &contact);
+      Teuchos::tuple<std::string>("Complementarity", "Certain Iterate", "Converged State"), &contact);
   contact.set("Re-solve Tolerance", 0.0,
               "relative residual ||F|| / ||F_0|| at which a re-solve after a status change stops when the next "
               "change is read from it; the state that needs no change is then converged to the Solver tolerances "

@@ -22,6 +22,9 @@ const SolveReport& Problem::solve() {
   // at rest (FrictionSettings::stickAtRest), then from frictionless walls with every halving the
   // case allows (docs/contact.md).
   const Vector initial(*m_solution, Teuchos::Copy);
+  // From another mesh's converged state the complementarity walls decide from the start.
+  if (m_warmStart && m_statusLoop->complementarity())
+    for (ContactWall& wall : m_walls) wall.enterComplementarity();
   const double caseMinimum = m_params.sublist("Solver").sublist("Continuation").get<double>("Minimum Step");
   const double firstMinimum = m_walls.empty() ? 0.0 : std::max(caseMinimum, std::ldexp(1.0, -kFirstTryHalvings));
   // From another mesh's converged state (startFrom): Newton at the target from there; resolve()
@@ -43,6 +46,7 @@ const SolveReport& Problem::solve() {
     again(false, "from frictionless walls with every continuation halving");
   m_report.newtonPerSolve = {m_report.newtonIterations};
   if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) m_report.message += firstSolveHints();
+  if (m_report.converged && !m_walls.empty() && m_statusLoop->complementarity()) enterComplementarity(solver);
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged && !m_freeSurfaces->empty()) {
@@ -50,6 +54,38 @@ const SolveReport& Problem::solve() {
     if (m_report.converged && m_bcs->releaseHeld(m_mesh)) releaseHeldAndGoOn(solver);
   }
   return m_report;
+}
+
+void Problem::enterComplementarity(NonlinearSolver& solver) {
+  // The first solve converged with the walls' initial statuses (every node active by default: a
+  // smooth problem, reached by the continuation); from there the complementarity walls decide
+  // their contact zones inside Newton (ContactWall::enterComplementarity). Should that Newton
+  // fail (a contact zone that does not settle), the walls go back to their statuses and the
+  // status loop decides them, one node at a time (the paper's reference strategy).
+  std::vector<ContactWall::State> before;
+  for (const ContactWall& wall : m_walls) before.push_back(wall.state());
+  int nodes = 0;
+  for (ContactWall& wall : m_walls) nodes += wall.enterComplementarity();
+  if (nodes == 0) return;
+  const Vector converged(*m_solution, Teuchos::Copy);
+  const SolveReport r = solver.resolve(*m_solution, m_physics);
+  m_report.newtonIterations += r.newtonIterations;
+  m_report.newtonPerSolve.push_back(r.newtonIterations);
+  m_report.restarts += r.restarts;
+  m_report.residualNorm = r.residualNorm;
+  if (r.converged) {
+    log() << "contact: " << nodes << " wall node(s) decide their contact by complementarity; Newton converged in "
+          << r.newtonIterations << " iteration(s)\n";
+    return;
+  }
+  warn() << "contact: Newton with the complementarity walls did not converge (" << r.message
+         << "); the status loop decides the contact zones instead (Contact/Status Update = Certain Iterate)\n";
+  for (size_t w = 0; w < m_walls.size(); ++w) {
+    m_walls[w].leaveComplementarity();
+    m_walls[w].restore(before[w]);
+  }
+  Tpetra::deep_copy(*m_solution, converged);
+  m_statusLoop->fallBackToStatuses();
 }
 
 std::string Problem::firstSolveHints() const {

@@ -16,7 +16,8 @@ ContactStatusLoop::ContactStatusLoop(const Teuchos::ParameterList& contact, cons
       m_pressureTolerance(contact.get<double>("Pressure Tolerance")),
       m_penetrationTolerance(contact.get<double>("Penetration Tolerance")),
       m_resolveTolerance(contact.get<double>("Re-solve Tolerance")),
-      m_certainIterate(contact.get<std::string>("Status Update") == "Certain Iterate"),
+      m_certainIterate(contact.get<std::string>("Status Update") != "Converged State"),
+      m_complementarity(contact.get<std::string>("Status Update") == "Complementarity"),
       m_mesh(mesh),
       m_dofMap(dofMap) {}
 
@@ -261,6 +262,24 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
     resolve(options);
   }
   log() << "contact: " << changes << " status change(s)\n";
+  // The complementarity nodes' contact as the converged state has it (responses and outputs read it).
+  if (report.converged) {
+    const std::vector<WallValues> values = gatherWallValues(walls, x);
+    for (size_t w = 0; w < walls.size(); ++w) {
+      if (!walls[w].complementarity()) continue;
+      const int changed = walls[w].readContact(values[w].u);
+      int pressing = 0, nodes = 0;
+      for (int k = 0; k < walls[w].numNodes(); ++k)
+        if (walls[w].isComplementary(k)) {
+          ++nodes;
+          pressing += walls[w].isActive(k);
+        }
+      if (nodes > 0)
+        log() << "contact: wall '" << walls[w].name() << "': " << pressing << " of " << nodes
+              << " complementarity node(s) press on the tool (" << changed << " changed)\n";
+      changes += changed;
+    }
+  }
   return changes;
 }
 

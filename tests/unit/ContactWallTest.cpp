@@ -30,6 +30,14 @@ ContactWall makeWall(const std::string& law, double nu, double m = 0.0, Geometry
 
 const double kL = 0.5;
 
+/// A wall node's stencil values (ContactWall::nodeStencil) from its velocity u[2] and the
+/// pressures p[3] of its previous neighbour, itself and its next one; the neighbours'
+/// velocities 0 (a wall with statuses does not read them).
+template <typename T>
+std::array<T, ContactWall::kNodeStencilSize> V(const T* u, const T* p) {
+  return {u[0], u[1], p[0], p[1], p[2], T(0.0), T(0.0), T(0.0), T(0.0)};
+}
+
 TEUCHOS_UNIT_TEST(ContactWall, CoulombSlipIsConsistentlyLumpedPressure) {
   const ContactWall wall = makeWall("Coulomb", 0.2);
   // Middle node: two segments of length L; f̂ = ν [L(p1/3 + p0/6) + L(p1/3 + p2/6)].
@@ -37,19 +45,19 @@ TEUCHOS_UNIT_TEST(ContactWall, CoulombSlipIsConsistentlyLumpedPressure) {
   const double fHat = 0.2 * (kL * (2.0 / 3 + 1.0 / 6) + kL * (2.0 / 3 + 4.0 / 6));
   const double u[2] = {0.5, 0.0};  // slides along +t: α_t |u_t| = 10·2·0.5 = 10 > f̂
   bool sticks = true;
-  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, u, p, &sticks), fHat, 1e-14);
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, V(u, p).data(), &sticks), fHat, 1e-14);
   TEST_ASSERT(!sticks);
   // Residual: R += α_n (u·n) n + g t with α_n = 100·2, u·n = 0 here, t = (1, 0).
   double R[2] = {0.0, 0.0};
-  wall.addNodeResidual(1, u, p, R);
+  wall.addNodeResidual(1, V(u, p).data(), R);
   TEST_FLOATING_EQUALITY(R[0], fHat, 1e-14);
   TEST_EQUALITY_CONST(R[1], 0.0);
   // Reversed sliding reverses the force.
   const double uBack[2] = {-0.5, 0.0};
-  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, uBack, p), -fHat, 1e-14);
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, V(uBack, p).data()), -fHat, 1e-14);
   // End node 0 has one segment: f̂ = ν L (p0/3 + p1/6) (its p[0] is ignored: no neighbour).
   const double pEnd[3] = {99.0, 1.0, 2.0};
-  TEST_FLOATING_EQUALITY(wall.tangentialForce(0, u, pEnd), 0.2 * kL * (1.0 / 3 + 2.0 / 6), 1e-14);
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(0, V(u, pEnd).data()), 0.2 * kL * (1.0 / 3 + 2.0 / 6), 1e-14);
 }
 
 TEUCHOS_UNIT_TEST(ContactWall, StickBelowTheBoundAndNothingInTension) {
@@ -57,14 +65,14 @@ TEUCHOS_UNIT_TEST(ContactWall, StickBelowTheBoundAndNothingInTension) {
   const double p[3] = {1.0, 2.0, 4.0};
   const double u[2] = {1e-4, 0.0};  // α_t |u_t| = 2e-3 < f̂ = 0.25: stick
   bool sticks = false;
-  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, u, p, &sticks), 10.0 * 2.0 * 1e-4, 1e-14);
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, V(u, p).data(), &sticks), 10.0 * 2.0 * 1e-4, 1e-14);
   TEST_ASSERT(sticks);
   const double tension[3] = {-1.0, -2.0, -4.0};  // p⁺ = 0: no friction
-  TEST_EQUALITY_CONST(wall.tangentialForce(1, u, tension), 0.0);
+  TEST_EQUALITY_CONST(wall.tangentialForce(1, V(u, tension).data()), 0.0);
   // Normal penalty: u·n with n = (0,−1); u_y = −0.01 means u·n = 0.01 (moving into the tool).
   const double uIn[2] = {0.0, -0.01};
   double R[2] = {0.0, 0.0};
-  wall.addNodeResidual(1, uIn, tension, R);
+  wall.addNodeResidual(1, V(uIn, tension).data(), R);
   TEST_FLOATING_EQUALITY(R[1], 100.0 * 2.0 * 0.01 * (-1.0), 1e-14);
 }
 
@@ -73,15 +81,15 @@ TEUCHOS_UNIT_TEST(ContactWall, TrescaOrowanNortonByHand) {
   const double u[2] = {0.5, 0.0};
   // Tresca, m = 0.5, σ̄ = 1.5: f̂ = m σ̄/√3 × 2 L (1/3 + 1/6) = m σ̄/√3 × L.
   const double tresca = 0.5 * 1.5 / std::sqrt(3.0) * kL;
-  TEST_FLOATING_EQUALITY(makeWall("Tresca", 0.0, 0.5).tangentialForce(1, u, p), tresca, 1e-14);
+  TEST_FLOATING_EQUALITY(makeWall("Tresca", 0.0, 0.5).tangentialForce(1, V(u, p).data()), tresca, 1e-14);
   // Orowan: the smaller of the Coulomb and Tresca bounds.
   const double coulomb = 0.2 * (kL * (2.0 / 3 + 1.0 / 6) + kL * (2.0 / 3 + 4.0 / 6));
-  TEST_FLOATING_EQUALITY(makeWall("Orowan", 0.2, 0.5).tangentialForce(1, u, p), std::min(coulomb, tresca), 1e-14);
-  TEST_FLOATING_EQUALITY(makeWall("Orowan", 0.01, 0.5).tangentialForce(1, u, p), 0.05 * coulomb, 1e-14);
+  TEST_FLOATING_EQUALITY(makeWall("Orowan", 0.2, 0.5).tangentialForce(1, V(u, p).data()), std::min(coulomb, tresca), 1e-14);
+  TEST_FLOATING_EQUALITY(makeWall("Orowan", 0.01, 0.5).tangentialForce(1, V(u, p).data()), 0.05 * coulomb, 1e-14);
   // Norton: α_f K (u_t² + ε²)^((q−1)/2) u_t × tributary length (two halves of L = L).
   const double norton = 0.7 * std::pow(0.25 + 1e-12, 0.5 * (0.3 - 1.0)) * 0.5 * kL;
-  TEST_FLOATING_EQUALITY(makeWall("Norton", 0.0).tangentialForce(1, u, p), norton, 1e-12);
-  TEST_EQUALITY_CONST(makeWall("None", 0.2).tangentialForce(1, u, p), 0.0);
+  TEST_FLOATING_EQUALITY(makeWall("Norton", 0.0).tangentialForce(1, V(u, p).data()), norton, 1e-12);
+  TEST_EQUALITY_CONST(makeWall("None", 0.2).tangentialForce(1, V(u, p).data()), 0.0);
 }
 
 TEUCHOS_UNIT_TEST(ContactWall, FreeNodesAndSegmentsCarryNothing) {
@@ -89,9 +97,9 @@ TEUCHOS_UNIT_TEST(ContactWall, FreeNodesAndSegmentsCarryNothing) {
   const double p[3] = {1.0, 2.0, 4.0};
   const double u[2] = {0.5, 0.3};
   wall.setActive(2, false);  // segment (1,2) inactive: only (0,1) loads node 1
-  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, u, p), 0.2 * kL * (2.0 / 3 + 1.0 / 6), 1e-14);
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, V(u, p).data()), 0.2 * kL * (2.0 / 3 + 1.0 / 6), 1e-14);
   double R[2] = {0.0, 0.0};
-  wall.addNodeResidual(2, u, p, R);  // a free node: no term at all
+  wall.addNodeResidual(2, V(u, p).data(), R);  // a free node: no term at all
   TEST_EQUALITY_CONST(R[0], 0.0);
   TEST_EQUALITY_CONST(R[1], 0.0);
 }
@@ -111,13 +119,13 @@ TEUCHOS_UNIT_TEST(ContactWall, SelfDecidingNodePushesButNeverPulls) {
   const double p[3] = {1.0, 2.0, 4.0};
   const double pressing[2] = {0.5, -0.01};
   double R[2] = {0.0, 0.0};
-  wall.addNodeResidual(1, pressing, p, R);
+  wall.addNodeResidual(1, V(pressing, p).data(), R);
   TEST_FLOATING_EQUALITY(R[0], 0.2 * 2.0, 1e-14);
   TEST_FLOATING_EQUALITY(R[1], -2.0, 1e-14);
   // Separating (u·n = −0.01): nothing, neither the penalty's pull nor friction.
   const double separating[2] = {0.5, 0.01};
   double S[2] = {0.0, 0.0};
-  wall.addNodeResidual(1, separating, p, S);
+  wall.addNodeResidual(1, V(separating, p).data(), S);
   TEST_EQUALITY_CONST(S[0], 0.0);
   TEST_EQUALITY_CONST(S[1], 0.0);
   // Leaving the tool beyond the penetration tolerance, it is released like any node.
@@ -135,7 +143,7 @@ TEUCHOS_UNIT_TEST(ContactWall, AxisymmetricWeightIsTwoPiR) {
   // right segment r = 0.5 + s, N_1 = 1 − s/L: ∫ (1 − s/L)(0.5 + s) ds = 0.5 L/2 + L²/6.
   const double integral = kL * kL / 3 + 0.5 * kL / 2 + kL * kL / 6;
   const double u[2] = {5.0, 0.0};
-  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, u, p), 0.2 * 2 * M_PI * integral, 1e-13);
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, V(u, p).data()), 0.2 * 2 * M_PI * integral, 1e-13);
 }
 
 /// AD tangent of the node residual against central differences, in slip and in stick.
@@ -145,7 +153,7 @@ void checkTangent(const ContactWall& wall, int k, const double* u0, const double
   Fad u[2] = {Fad(5, 0, u0[0]), Fad(5, 1, u0[1])};
   Fad p[3] = {Fad(5, 2, p0[0]), Fad(5, 3, p0[1]), Fad(5, 4, p0[2])};
   Fad R[2] = {0.0, 0.0};
-  wall.addNodeResidual(k, u, p, R);
+  wall.addNodeResidual(k, V(u, p).data(), R);
   const double delta = 1e-7;  // central FD: truncation O(δ²) on the smooth branch, round-off ~1e-16/δ
   for (int j = 0; j < 5; ++j) {
     double up[2] = {u0[0], u0[1]}, pp[3] = {p0[0], p0[1], p0[2]};
@@ -153,8 +161,8 @@ void checkTangent(const ContactWall& wall, int k, const double* u0, const double
     (j < 2 ? up[j] : pp[j - 2]) += delta;
     (j < 2 ? um[j] : pm[j - 2]) -= delta;
     double Rp[2] = {0, 0}, Rm[2] = {0, 0};
-    wall.addNodeResidual(k, up, pp, Rp);
-    wall.addNodeResidual(k, um, pm, Rm);
+    wall.addNodeResidual(k, V(up, pp).data(), Rp);
+    wall.addNodeResidual(k, V(um, pm).data(), Rm);
     for (int c = 0; c < 2; ++c) {
       const double fd = (Rp[c] - Rm[c]) / (2 * delta);
       TEST_FLOATING_EQUALITY(R[c].dx(j) + 1.0, fd + 1.0, 1e-6);
@@ -187,8 +195,8 @@ std::array<double, 2> parameterDerivative(const ContactWall& wall, int k, int wh
   const FrictionParameters<PFad> fp{which == 0 ? PFad(1, 0, fp0.frictionCoefficient) : PFad(fp0.frictionCoefficient),
                                     which == 1 ? PFad(1, 0, fp0.shearFactor) : PFad(fp0.shearFactor)};
   PFad u[2] = {u0[0], u0[1]}, p[3] = {p0[0], p0[1], p0[2]}, R[2] = {0.0, 0.0};
-  wall.addNodeResidual(k, fp, u, p, R);
-  if (branch) wall.tangentialForce(k, fp, u, p, branch);
+  wall.addNodeResidual(k, fp, V(u, p).data(), R);
+  if (branch) wall.tangentialForce(k, fp, V(u, p).data(), branch);
   return {R[0].dx(0), R[1].dx(0)};
 }
 
@@ -200,7 +208,7 @@ std::array<double, 2> parameterDifference(const ContactWall& wall, int k, int wh
     FrictionParameters<double> fp = wall.frictionParameters();
     (which == 0 ? fp.frictionCoefficient : fp.shearFactor) += sign * delta;
     double R[2] = {0.0, 0.0};
-    wall.addNodeResidual(k, fp, u0, p0, R);
+    wall.addNodeResidual(k, fp, V(u0, p0).data(), R);
     for (int c = 0; c < 2; ++c) d[c] += sign * R[c] / (2 * delta);
   }
   return d;

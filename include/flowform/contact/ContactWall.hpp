@@ -80,7 +80,31 @@ class ContactWall {
   /// Consecutive wall nodes, which the friction law couples (for the DofMap).
   std::vector<std::array<GO, 2>> couplings() const;
 
-  bool isActive(int k) const { return m_active[k] != kFree; }
+  /// Whether node k is in contact: its status, or for a complementarity node whether it pressed
+  /// on the tool (u·n > 0) at the state last read (readContact).
+  bool isActive(int k) const { return m_active[k] == kComplementary ? m_inContact[k] != 0 : m_active[k] != kFree; }
+
+  /// Complementarity (Contact/Status Update = Complementarity, docs/contact.md §"Complementarity"):
+  /// every node of this wall that can change its status (not held, not at an open convex tool
+  /// corner, on a wall whose released nodes are Fixed) stops having one. Its normal force is
+  /// α_n max(u·n, 0) — the penalty-regularized complementarity between the normal reaction and
+  /// the penetration, decided by Newton itself (semi-smooth: the generalized derivative of max) —
+  /// and its friction acts over the part of each adjacent segment that is in contact, which ends
+  /// at the interpolated zero of φ = λ/(μW) (in contact) or u·n (separated) inside the segment
+  /// that holds the zone limit. The remaining nodes keep their statuses, changed by the
+  /// status loop. Returns the number of complementarity nodes.
+  int enterComplementarity();
+  bool complementarity() const { return m_complementarity; }
+  /// Back to statuses: each complementarity node active if it pressed at the last readContact.
+  void leaveComplementarity() {
+    for (int k = 0; k < numNodes(); ++k)
+      if (m_active[k] == kComplementary) m_active[k] = m_inContact[k] ? kActive : kFree;
+    m_complementarity = false;
+  }
+  bool isComplementary(int k) const { return m_active[k] == kComplementary; }
+  /// Records which complementarity nodes press on the tool at `u` (per wall node); returns how
+  /// many changed since the last reading.
+  int readContact(const std::vector<std::array<double, 2>>& u);
   /// Changes the status of node k and counts the change.
   void setActive(int k, bool active) {
     m_active[k] = active ? kActive : kFree;
@@ -132,14 +156,15 @@ class ContactWall {
   /// penalty scales. A perturbed solve (the finite-difference check) saves it and restores it
   /// afterwards; the geometry is not part of it.
   struct State {
-    std::vector<char> active;
+    std::vector<char> active, inContact;
     std::vector<int> changes;
     FrictionParameters<double> friction;
     std::vector<double> viscosity, flowStress;
   };
-  State state() const { return {m_active, m_changes, frictionParameters(), m_viscosity, m_flowStress}; }
+  State state() const { return {m_active, m_inContact, m_changes, frictionParameters(), m_viscosity, m_flowStress}; }
   void restore(const State& s) {
     m_active = s.active;
+    m_inContact = s.inContact;
     m_changes = s.changes;
     setFrictionCoefficient(s.friction.frictionCoefficient);
     setShearFactor(s.friction.shearFactor);
@@ -177,39 +202,53 @@ class ContactWall {
     int node, component;
   };
   /// Size of a wall node's stencil (the assembler's AD types are sized with it) and of its rows.
-  static constexpr int kNodeStencilSize = 5;
+  static constexpr int kNodeStencilSize = 9;
   static constexpr int kNodeRows = 2;
   /// The stencil of node k's residual in the order addNodeResidual reads it: u_x, u_y of k
-  /// (its kNodeRows rows, in that order), then p of previous(k), k, next(k).
+  /// (its kNodeRows rows, in that order), then p of previous(k), k, next(k), then u_x, u_y of
+  /// previous(k) and of next(k) (a complementarity node's contact part of each segment).
   std::array<StencilEntry, kNodeStencilSize> nodeStencil(int k) const {
-    return {{{k, kUx}, {k, kUy}, {previous(k), kP}, {k, kP}, {next(k), kP}}};
+    return {{{k, kUx},
+             {k, kUy},
+             {previous(k), kP},
+             {k, kP},
+             {next(k), kP},
+             {previous(k), kUx},
+             {previous(k), kUy},
+             {next(k), kUx},
+             {next(k), kUy}}};
   }
 
-  /// The two momentum rows of wall node k: dofs are u_k (2) and the pressures of
-  /// previous(k), k, next(k) (an absent neighbour's is ignored). Adds into R[2]. The
+  /// The two momentum rows of wall node k from its stencil's values `v` (nodeStencil's order:
+  /// u_k = v[0..1], the pressures of previous(k), k, next(k) = v[2..4], the neighbours'
+  /// velocities v[5..8]; an absent neighbour's entries are ignored). Adds into R[2]. The
   /// friction parameters are `fp` (PScalar: double, or an AD type when ∂/∂ν, ∂/∂m are
   /// wanted; Scalar must then be an AD type of the same kind).
   /// `dual` (Jacobian evaluations only) selects the dual slip linearization (FrictionDual.hpp).
   template <typename Scalar, typename PScalar>
-  void addNodeResidual(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p, Scalar* R,
+  void addNodeResidual(int k, const FrictionParameters<PScalar>& fp, const Scalar* v, Scalar* R,
                        FrictionDualPoint* dual = nullptr) const;
   template <typename Scalar>
-  void addNodeResidual(int k, const Scalar* u, const Scalar* p, Scalar* R) const {
-    addNodeResidual(k, frictionParameters(), u, p, R);
+  void addNodeResidual(int k, const Scalar* v, Scalar* R) const {
+    addNodeResidual(k, frictionParameters(), v, R);
   }
 
-  /// Tangential force g_k (positive along t_k) and the branch of the law it is on.
+  /// Tangential force g_k (positive along t_k) from the stencil's values `v`, and the branch of
+  /// the law it is on.
   template <typename Scalar, typename PScalar>
-  Scalar tangentialForce(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
+  Scalar tangentialForce(int k, const FrictionParameters<PScalar>& fp, const Scalar* v,
                          FrictionBranch* branch = nullptr, FrictionDualPoint* dual = nullptr) const;
   /// g_k with the case's ν, m, and whether the node sticks, for output.
   template <typename Scalar>
-  Scalar tangentialForce(int k, const Scalar* u, const Scalar* p, bool* sticks = nullptr) const {
+  Scalar tangentialForce(int k, const Scalar* v, bool* sticks = nullptr) const {
     FrictionBranch b;
-    const Scalar g = tangentialForce(k, frictionParameters(), u, p, &b);
+    const Scalar g = tangentialForce(k, frictionParameters(), v, &b);
     if (sticks) *sticks = b == FrictionBranch::Stick;
     return g;
   }
+  /// The stencil's values of node k (nodeStencil's order) from per-wall-node p and u.
+  std::array<double, kNodeStencilSize> stencilValues(int k, const std::vector<double>& p,
+                                                     const std::vector<std::array<double, 2>>& u) const;
 
   /// The next status change (docs/theory.md §2): an active node in tension (p < −pressureTolerance)
   /// is released, a free node that penetrates (u·n > penetrationTolerance) is activated;
@@ -245,14 +284,24 @@ class ContactWall {
                    double pressureTolerance, double penetrationTolerance) const;
   /// P_k, S_k and A_k of node k, each only when the law needs it (FrictionLaw.hpp).
   template <typename Scalar>
-  void lumpSegmentIntegrals(int k, const Scalar* p, FrictionNodeData<Scalar>& d) const;
+  void lumpSegmentIntegrals(int k, const Scalar* v, FrictionNodeData<Scalar>& d) const;
+  /// A complementarity wall: the part [s0, s1] of segment k–o (s = 0 at k, 1 at o) that is in
+  /// contact, from the nodes' velocities: all of it when both nodes press on the tool, none
+  /// when neither does, else up to the zero of φ interpolated along it (enterComplementarity).
+  template <typename Scalar>
+  bool contactPart(int k, int o, const Scalar* uk, const Scalar* uo, Scalar& s0, Scalar& s1) const;
+  /// φ_j of wall node j at velocity uj (enterComplementarity) and whether j is in contact.
+  template <typename Scalar>
+  Scalar contactMeasure(int j, const Scalar* uj, bool& inContact) const;
   double weight(int k) const;  ///< W_k: 2π r_k or 1
 
   BoundaryCurve m_curve;
   ContactWallSettings m_settings;
   Geometry m_geometry;
-  static constexpr char kFree = 0, kActive = 1, kSelfDeciding = 2;
-  std::vector<char> m_active;  ///< kFree, kActive or kSelfDeciding per node
+  static constexpr char kFree = 0, kActive = 1, kSelfDeciding = 2, kComplementary = 3;
+  std::vector<char> m_active;     ///< kFree, kActive, kSelfDeciding or kComplementary per node
+  std::vector<char> m_inContact;  ///< kComplementary nodes: u·n > 0 at the last readContact
+  bool m_complementarity = false;
   std::vector<int> m_changes;
   std::vector<std::vector<std::array<double, 2>>> m_cornerNormals;
   bool m_firstIsUpstream = true;  ///< firstNodeIsUpstream()
@@ -277,27 +326,79 @@ inline double ContactWall::weight(int k) const {
 }
 
 template <typename Scalar>
-void ContactWall::lumpSegmentIntegrals(int k, const Scalar* p, FrictionNodeData<Scalar>& d) const {
+Scalar ContactWall::contactMeasure(int j, const Scalar* uj, bool& inContact) const {
+  const auto& n = m_curve.normals[j];
+  const Scalar g = n[0] * uj[0] + n[1] * uj[1];
+  const double kappa = m_settings.normalPenalty;
+  switch (m_active[j]) {
+    case kActive:  // held by its status: in contact, φ = its normal reaction (≥ 0)
+      inContact = true;
+      return g > 0.0 ? Scalar(kappa * g) : Scalar(0.0);
+    case kFree:
+      inContact = false;
+      return g < 0.0 ? g : Scalar(0.0);
+    default:  // complementarity (and self-deciding) nodes: λ/(μW) = κ_n u·n pressing, u·n separating
+      inContact = g > 0.0;
+      return inContact ? Scalar(kappa * g) : g;
+  }
+}
+
+template <typename Scalar>
+bool ContactWall::contactPart(int k, int o, const Scalar* uk, const Scalar* uo, Scalar& s0, Scalar& s1) const {
+  bool ck = false, co = false;
+  const Scalar phiK = contactMeasure(k, uk, ck);
+  const Scalar phiO = contactMeasure(o, uo, co);
+  s0 = 0.0;
+  s1 = 1.0;
+  if (ck && co) return true;
+  if (!ck && !co) return false;
+  // One end in contact (φ ≥ 0), the other not (φ ≤ 0): the limit is the zero of the linear φ.
+  const Scalar jump = phiK - phiO;
+  const Scalar zero = ck ? (jump > 0.0 ? phiK / jump : Scalar(0.5)) : (jump < 0.0 ? phiK / jump : Scalar(0.5));
+  if (ck)
+    s1 = zero;
+  else
+    s0 = zero;
+  return true;
+}
+
+template <typename Scalar>
+void ContactWall::lumpSegmentIntegrals(int k, const Scalar* v, FrictionNodeData<Scalar>& d) const {
   // Σ_s ∫_s N_k (·) W ds over the active segments at k (integrateSegment: exact for N, p_h,
-  // σ̄_h and W linear along the segment).
+  // σ̄_h and W linear along the segment). A complementarity wall integrates each segment over
+  // its part in contact (contactPart), with the same 2-point rule on that part.
   const FrictionLawInfo& info = law();
   const int neighbours[2] = {previous(k), next(k)};
+  const Scalar* p = v + 2;
   for (int side = 0; side < 2; ++side) {
     const int o = neighbours[side];
-    if (o < 0 || !m_active[o]) continue;
+    if (o < 0) continue;
     const Scalar pk = p[1] > 0.0 ? p[1] : Scalar(0.0);                                  // p⁺_k
     const Scalar po = p[side == 0 ? 0 : 2] > 0.0 ? p[side == 0 ? 0 : 2] : Scalar(0.0);  // p⁺_o
-    integrateSegment(m_coords[k], m_coords[o], m_geometry, [&](double Nk, double No, double w) {
+    const double sk = m_flowStress[k], so = m_flowStress[o];
+    if (!m_complementarity) {
+      if (!m_active[o]) continue;
+      integrateSegment(m_coords[k], m_coords[o], m_geometry, [&](double Nk, double No, double w) {
+        if (info.usesFrictionCoefficient) d.pressureIntegral += w * Nk * (Nk * pk + No * po);
+        if (info.usesShearFactor) d.stressIntegral += w * Nk * (Nk * sk + No * so);
+        if (info.needsTributary) d.tributary += w * Nk;
+      });
+      continue;
+    }
+    Scalar s0, s1;
+    if (!contactPart(k, o, v, v + (side == 0 ? 5 : 7), s0, s1)) continue;
+    integrateSegmentPart(m_coords[k], m_coords[o], s0, s1, m_geometry, [&](const Scalar& Nk, const Scalar& No, const Scalar& w) {
       if (info.usesFrictionCoefficient) d.pressureIntegral += w * Nk * (Nk * pk + No * po);
-      if (info.usesShearFactor) d.stressIntegral += w * Nk * (Nk * m_flowStress[k] + No * m_flowStress[o]);
+      if (info.usesShearFactor) d.stressIntegral += w * Nk * (Nk * sk + No * so);
       if (info.needsTributary) d.tributary += w * Nk;
     });
   }
 }
 
 template <typename Scalar, typename PScalar>
-Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
+Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp, const Scalar* v,
                                     FrictionBranch* branch, FrictionDualPoint* dual) const {
+  const Scalar* u = v;
   const auto& n = m_curve.normals[k];
   const bool separating = m_active[k] == kSelfDeciding && !(n[0] * u[0] + n[1] * u[1] > 0.0);
   if (m_active[k] == kFree || separating) {
@@ -305,8 +406,14 @@ Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp
     return Scalar(0.0);
   }
   FrictionNodeData<Scalar> d{-n[1] * u[0] + n[0] * u[1],  // u·t, t = (−n_y, n_x)
-                             Scalar(0.0), 0.0, 0.0, m_settings.tangentialPenalty * m_viscosity[k] * weight(k), dual};
-  lumpSegmentIntegrals(k, p, d);
+                             Scalar(0.0), Scalar(0.0), Scalar(0.0),
+                             m_settings.tangentialPenalty * m_viscosity[k] * weight(k), dual};
+  lumpSegmentIntegrals(k, v, d);
+  if (m_active[k] == kComplementary && !(d.pressureIntegral > 0.0) && !(d.stressIntegral > 0.0) &&
+      !(d.tributary > 0.0)) {
+    if (branch) *branch = FrictionBranch::Free;  // no part of its segments in contact
+    return Scalar(0.0);
+  }
   if (m_settings.coulombOnContactForce || m_active[k] == kSelfDeciding) {
     // N_k = max(α_n u·n, 0): the penalty's normal force on the node (its normal traction, lumped).
     const Scalar normalForce = m_settings.normalPenalty * m_viscosity[k] * weight(k) * (n[0] * u[0] + n[1] * u[1]);
@@ -318,16 +425,18 @@ Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp
 }
 
 template <typename Scalar, typename PScalar>
-void ContactWall::addNodeResidual(int k, const FrictionParameters<PScalar>& fp, const Scalar* u, const Scalar* p,
-                                  Scalar* R, FrictionDualPoint* dual) const {
+void ContactWall::addNodeResidual(int k, const FrictionParameters<PScalar>& fp, const Scalar* v, Scalar* R,
+                                  FrictionDualPoint* dual) const {
   if (m_active[k] == kFree) return;
+  const Scalar* u = v;
   const auto& n = m_curve.normals[k];
   const double alphaN = m_settings.normalPenalty * m_viscosity[k] * weight(k);
   Scalar un = n[0] * u[0] + n[1] * u[1];
-  if (m_active[k] == kSelfDeciding && !(un > 0.0)) un = Scalar(0.0);  // α_n max(u·n, 0)
+  const bool oneSided = m_active[k] == kSelfDeciding || m_active[k] == kComplementary;
+  if (oneSided && !(un > 0.0)) un = Scalar(0.0);  // α_n max(u·n, 0)
   R[0] += alphaN * un * n[0];
   R[1] += alphaN * un * n[1];
-  const Scalar g = tangentialForce(k, fp, u, p, nullptr, dual);
+  const Scalar g = tangentialForce(k, fp, v, nullptr, dual);
   R[0] += g * (-n[1]);
   R[1] += g * n[0];
 }

@@ -60,4 +60,20 @@ void integrateSegment(const std::array<double, 2>& a, const std::array<double, 2
   }
 }
 
+/// The same rule on the part [s0, s1] of the segment a–b (s = 0 at a, 1 at b; s0, s1 may be AD
+/// types): f(N_a, N_b, w) at the two Gauss points of the part, w = ½ L (s1 − s0) (× 2π r).
+template <typename S, typename F>
+void integrateSegmentPart(const std::array<double, 2>& a, const std::array<double, 2>& b, const S& s0, const S& s1,
+                          Geometry geometry, F&& f) {
+  const double gp[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+  for (double xi : gp) {
+    const S s = s0 + (s1 - s0) * xi;
+    const S Na = 1.0 - s, Nb = s;
+    S w = 0.5 * length * (s1 - s0);
+    if (geometry == Geometry::Axisymmetric) w *= 2.0 * M_PI * (Na * a[0] + Nb * b[0]);
+    f(Na, Nb, w);
+  }
+}
+
 }  // namespace flowform

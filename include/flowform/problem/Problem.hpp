@@ -87,6 +87,9 @@ class Problem {
   /// What the linearized free-surface update reads and moves: this problem's state.
   SurfaceLinearizationState linearizationState();
 
+  /// Contact/Status Update = Complementarity: from the converged first solve, the walls decide
+  /// their contact zones inside Newton; if that fails, the status loop decides them.
+  void enterComplementarity(NonlinearSolver& solver);
   /// What to try when the first solve of a case with contact walls failed from every start.
   std::string firstSolveHints() const;
 

@@ -13,7 +13,7 @@
 namespace flowform {
 
 /// Σ over the owned nodes of the walls (only wall `only` when not empty) of add(local, wall, k, fp,
-/// u, p, R_k): u the node's velocity, p the pressures of the node's wall stencil.
+/// v, R_k): v the node's stencil values (ContactWall::nodeStencil, u_k first).
 template <typename Scalar, typename Add>
 Scalar sumOverWallNodes(const ResponseContext<Scalar>& c, const std::string& only, Add&& add) {
   const DofMap& dofMap = c.dofMap;
@@ -25,14 +25,16 @@ Scalar sumOverWallNodes(const ResponseContext<Scalar>& c, const std::string& onl
     for (int k = 0; k < wall.numNodes(); ++k) {
       const LO n = dofMap.overlapIndex(wall.curve().nodes[k]);
       if (!dofMap.ownsNode(n)) continue;
-      auto pressure = [&](int j) {
-        return j < 0 ? Scalar(0.0) : c.at(c.x, dofMap.dof(dofMap.overlapIndex(wall.curve().nodes[j]), kP));
-      };
-      const Scalar u[2] = {c.u(c.x, n, kUx), c.u(c.x, n, kUy)};
-      const Scalar p[3] = {pressure(wall.previous(k)), c.u(c.x, n, kP), pressure(wall.next(k))};
+      // The node's stencil values (ContactWall::nodeStencil), an absent neighbour's 0.
+      Scalar v[ContactWall::kNodeStencilSize];
+      const auto stencil = wall.nodeStencil(k);
+      for (int i = 0; i < ContactWall::kNodeStencilSize; ++i)
+        v[i] = stencil[i].node < 0 ? Scalar(0.0)
+                                   : c.at(c.x, dofMap.dof(dofMap.overlapIndex(wall.curve().nodes[stencil[i].node]),
+                                                          stencil[i].component));
       Scalar Rk[2] = {0.0, 0.0};
-      wall.addNodeResidual(k, fp, u, p, Rk);
-      add(local, wall, k, fp, u, p, Rk);
+      wall.addNodeResidual(k, fp, v, Rk);
+      add(local, wall, k, fp, v, Rk);
     }
   }
   return sumOverRanks(*dofMap.comm(), local);
@@ -56,7 +58,7 @@ struct WallForce {
   template <typename Scalar>
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
     return sumOverWallNodes(c, m_wall, [&](Scalar& local, const ContactWall&, int, const FrictionParameters<Scalar>&,
-                                           const Scalar*, const Scalar*, const Scalar* Rk) {
+                                           const Scalar*, const Scalar* Rk) {
       local += m_component == 0 ? Rk[0] : Rk[1];
     });
   }
@@ -78,10 +80,9 @@ struct FrictionPower {
   template <typename Scalar>
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
     return sumOverWallNodes(c, "", [&](Scalar& local, const ContactWall& wall, int k,
-                                       const FrictionParameters<Scalar>& fp, const Scalar* u, const Scalar* p,
-                                       const Scalar*) {
+                                       const FrictionParameters<Scalar>& fp, const Scalar* u, const Scalar*) {
       const auto& nk = wall.curve().normals[k];
-      const Scalar g = wall.tangentialForce(k, fp, u, p);
+      const Scalar g = wall.tangentialForce(k, fp, u);
       local += g * (-nk[1] * u[0] + nk[0] * u[1]);
     });
   }
@@ -100,10 +101,9 @@ struct PenaltyPower {
   template <typename Scalar>
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
     return sumOverWallNodes(c, "", [&](Scalar& local, const ContactWall& wall, int k,
-                                       const FrictionParameters<Scalar>& fp, const Scalar* u, const Scalar* p,
-                                       const Scalar* Rk) {
+                                       const FrictionParameters<Scalar>& fp, const Scalar* u, const Scalar* Rk) {
       const auto& nk = wall.curve().normals[k];
-      const Scalar g = wall.tangentialForce(k, fp, u, p);
+      const Scalar g = wall.tangentialForce(k, fp, u);
       local += (Rk[0] + g * nk[1]) * u[0] + (Rk[1] - g * nk[0]) * u[1];
     });
   }

@@ -36,6 +36,17 @@ class ContactStatusLoop {
   /// run stays converged; the free-surface loop does not converge while any are left.
   void tolerateCycling(bool on) { m_tolerateCycling = on; }
 
+  /// Status Update = Complementarity: the walls decide their contact zones inside Newton
+  /// (ContactWall::enterComplementarity); this loop decides only the nodes that keep a status
+  /// (open convex tool corners, walls whose released nodes are a free surface) and reads the
+  /// complementarity nodes' contact at the end.
+  bool complementarity() const { return m_complementarity; }
+  /// After a failed complementarity solve: this loop decides every node (Certain Iterate).
+  void fallBackToStatuses() {
+    m_complementarity = false;
+    m_certainIterate = true;
+  }
+
  private:
   /// One decision of the loop: the change (wall −1: none), the runner-up's violation in the
   /// class the change came from, and the nodes that may not change again but violate.
@@ -74,6 +85,7 @@ class ContactStatusLoop {
   double m_pressureTolerance, m_penetrationTolerance;
   double m_resolveTolerance;  ///< relative residual of the intermediate re-solves (0: tight)
   bool m_certainIterate;      ///< Status Update = Certain Iterate
+  bool m_complementarity;     ///< Status Update = Complementarity
   const Mesh& m_mesh;
   const DofMap& m_dofMap;
 };

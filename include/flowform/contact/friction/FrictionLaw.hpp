@@ -49,8 +49,8 @@ template <typename Scalar>
 struct FrictionNodeData {
   Scalar tangentialVelocity;    ///< u_t
   Scalar pressureIntegral;      ///< P_k (0 unless the law needs it)
-  double stressIntegral;        ///< S_k (0 unless the law needs it)
-  double tributary;             ///< A_k (0 unless the law needs it)
+  Scalar stressIntegral;        ///< S_k (0 unless the law needs it)
+  Scalar tributary;             ///< A_k (0 unless the law needs it)
   double stickingStiffness;     ///< α_t
   FrictionDualPoint* dual = nullptr;  ///< Jacobian only: the dual slip linearization (FrictionDual.hpp)
 };
