@@ -301,6 +301,17 @@ int ContactWall::enterComplementarity() {
   return count;
 }
 
+int ContactWall::releaseCornersInTension(const std::vector<double>& p, double pressureTolerance) {
+  int count = 0;
+  for (int k = 0; k < numNodes(); ++k)
+    if (!m_cornerNormals[k].empty() && m_active[k] == kActive && !held(k) && !m_settings.neverReleased &&
+        !m_settings.releasedFreeSurface && p[k] < -pressureTolerance) {
+      setActive(k, false);
+      ++count;
+    }
+  return count;
+}
+
 int ContactWall::readContact(const std::vector<std::array<double, 2>>& u) {
   int changed = 0;
   for (int k = 0; k < numNodes(); ++k) {

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "flowform/core/Budget.hpp"
+#include "flowform/contact/WallStates.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/discretization/SolutionTransfer.hpp"
 #include "flowform/problem/Problem.hpp"
@@ -64,9 +65,18 @@ void Problem::enterComplementarity(NonlinearSolver& solver) {
   // status loop decides them, one node at a time (the paper's reference strategy).
   std::vector<ContactWall::State> before;
   for (const ContactWall& wall : m_walls) before.push_back(wall.state());
+  const double pressureTolerance = m_params.sublist("Contact").get<double>("Pressure Tolerance");
+  int corners = 0;
+  std::vector<double> p;
+  std::vector<std::array<double, 2>> u;
+  for (ContactWall& wall : m_walls) {
+    wallValues(wall, *m_dofMap, *m_solution, p, u);
+    corners += wall.releaseCornersInTension(p, pressureTolerance);
+  }
+  if (corners > 0) log() << "contact: " << corners << " node(s) at convex tool corners in tension released\n";
   int nodes = 0;
   for (ContactWall& wall : m_walls) nodes += wall.enterComplementarity();
-  if (nodes == 0) return;
+  if (nodes == 0 && corners == 0) return;
   const Vector converged(*m_solution, Teuchos::Copy);
   const SolveReport r = solver.resolve(*m_solution, m_physics);
   m_report.newtonIterations += r.newtonIterations;

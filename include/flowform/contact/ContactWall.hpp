@@ -95,6 +95,11 @@ class ContactWall {
   /// status loop. Returns the number of complementarity nodes.
   int enterComplementarity();
   bool complementarity() const { return m_complementarity; }
+  /// The nodes at open convex tool corners that keep statuses: those active and in tension
+  /// (p < −pressureTolerance) at `p` are released, all at once; returns how many. Called on the
+  /// first solve's state before enterComplementarity (the die lip, in tension when every node
+  /// is active, is released there as the paper's loop releases it first).
+  int releaseCornersInTension(const std::vector<double>& p, double pressureTolerance);
   /// Back to statuses: each complementarity node active if it pressed at the last readContact.
   void leaveComplementarity() {
     for (int k = 0; k < numNodes(); ++k)
