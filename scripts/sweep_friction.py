@@ -16,9 +16,10 @@ order: ram_force, ram_pressure, dead_zone; then any other), their error estimate
 (<response>_error_estimate), their derivatives by ν (<response>_dnu) and the derivatives'
 estimates (<response>_dnu_error_estimate), the converged flag, Newton iterations and contact
 changes (of the last adaptive cycle, and _total over the cycles), the cycles, whether the
-target was met, dofs and timings into OUT/sweep.csv, and prints a table. A run that does not
-converge (exit 3) is kept and flagged (converged = 0); a run that fails otherwise (bad input,
-crash) is listed with its exit status and no values.
+target was met, dofs and timings (the last cycle's; time_error_estimation too: summary.json
+gives no earlier cycle's) and the whole run's wall seconds into OUT/sweep.csv, and prints a
+table. A run that does not converge (exit 3) is kept and flagged (converged = 0); a run that
+fails otherwise (bad input, crash) is listed with its exit status and no values.
 
 One extra column, <force>_p (ram_force_p) = ∫_ram p ds (× 2πr when axisymmetric), is computed
 here from the CSV of the boundary of the case's first Boundary Force response (boundary_ram.csv):
