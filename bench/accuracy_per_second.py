@@ -290,7 +290,7 @@ def part_cutting(bench, results):
                 label = f"d{name}/d{p}" + (" (total)" if key.endswith("total_shape") else "")
                 body.append([label, fmt(v, "{:.6g}"), fmt(e, "{:+.3e}"),
                              fmt(e / abs(v) * 100 if e is not None and v else None, "{:+.2f} %"), "-"])
-    print(markdown(["response", "value", "η", "η/|value|", "refined mesh"], body, align="---:"))
+    print(markdown(["response", "value", "η", "relative η", "refined mesh"], body, align="---:"))
     ok = r["status"][0] == 0 and r["wall"] <= CUTTING_SECONDS_TARGET
     print(f"target cutting default with its estimate ≤ {CUTTING_SECONDS_TARGET:g} s: {'met' if ok else 'missed'} "
           f"({r['wall']:.1f} s wall)")
