@@ -67,11 +67,12 @@ def values_with_estimates(ax, x, y, eta=None, slope=None, color="C0", label=None
     eta, slope = column(eta), column(slope)
     shown = np.isfinite(x) & np.isfinite(y)
     drawn = {"points": int(shown.sum()), "error_bars": None, "bars": 0, "tangents": None, "segments": 0}
-    ax.plot(x[shown], y[shown], marker, ls="none", color=color, mfc=mfc, mec=mec, label=label)
+    # small markers under the bars: a 0.5 % bar is a few pixels on a plot of the whole sweep
+    ax.plot(x[shown], y[shown], marker, ls="none", ms=4, color=color, mfc=mfc, mec=mec, label=label, zorder=2)
     barred = shown & np.isfinite(eta)
     if barred.any():
         drawn["error_bars"] = ax.errorbar(x[barred], y[barred], yerr=np.abs(eta[barred]), fmt="none",
-                                          ecolor=color, elinewidth=1.0, capsize=3,
+                                          ecolor=color, elinewidth=1.0, capsize=3, zorder=3,
                                           label="± |error estimate|" if label else None)
         drawn["bars"] = int(barred.sum())
     tangent = shown & np.isfinite(slope)
@@ -79,7 +80,7 @@ def values_with_estimates(ax, x, y, eta=None, slope=None, color="C0", label=None
         w = tangent_half_width(x) if half_width is None else half_width
         segments = [[(xi - w, yi - si * w), (xi + w, yi + si * w)]
                     for xi, yi, si in zip(x[tangent], y[tangent], slope[tangent])]
-        drawn["tangents"] = ax.add_collection(LineCollection(segments, colors="k", linewidths=1.2,
+        drawn["tangents"] = ax.add_collection(LineCollection(segments, colors="k", linewidths=1.0, zorder=2.5,
                                                              label="DDM tangent" if label else None))
         drawn["segments"] = len(segments)
         ax.autoscale_view()
