@@ -1,8 +1,13 @@
 """Plots of the extrusion scene (docs/theory.md §6.2, docs/extrusion.md) from flowform's outputs.
 
   force_vs_nu.png      ram force (and the ∫p ds check), ram pressure and dead zone against
-                       the swept value, from SWEEP/sweep.csv (scripts/sweep_friction.py);
-                       runs that did not converge are drawn as open red markers
+                       the swept value, from SWEEP/sweep.csv (scripts/sweep_friction.py):
+                       each value with its error bar ± |error estimate| (the column
+                       <response>_error_estimate) and its DDM tangent, a short segment of
+                       slope d<response>/dν (the column <response>_dnu) through the point
+                       (the paper's fig. 4); a value without them (a --fixed-mesh sweep, or
+                       the dead zone, which has no derivative) is drawn bare; runs that did
+                       not converge are drawn as open red markers
   wall_velocity.png    tangential velocity u_t (in the direction of the material flow) and
                        pressure p along the tool walls container -> die_face -> die_land,
                        against the arc length from the ram, one curve per run (paper fig. 3a
@@ -81,7 +86,9 @@ def response_names(run_dir):
 # ------------------------------------------------------------------------------------------
 # plots
 
-def plot_force(rows, out_png, xlabel):
+def force_figure(rows, xlabel):
+    """The figure of force_vs_nu.png and, per panel (response), what was drawn
+    (plotting.values_with_estimates: points, error bars, DDM tangents)."""
     first = next((r["dir"] for r in rows if read_summary(r["dir"])), rows[0]["dir"])
     axisym = Scene.from_summary(read_summary(first)).axisymmetric
     names = response_names(first)  # e.g. force: ram_force, pressure: ram_pressure, dead_zone
@@ -102,19 +109,38 @@ def plot_force(rows, out_png, xlabel):
                   force + "_p": "ram force ∫ p ds",
                   pressure: "mean ram pressure", dead_zone: "dead zone area"}
     order = np.argsort(nu)
+    half_width = plotting.tangent_half_width(nu)
+    drawn = {}
     for ax, key in zip(axes[0], panels):
         y = np.array([num(r.get(key)) for r in rows])
+        eta = np.array([num(r.get(key + "_error_estimate")) for r in rows])
+        slope = np.array([num(r.get(key + "_dnu")) for r in rows])
         ax.plot(nu[order], y[order], "-", color="C0", lw=1)
-        ax.plot(nu[conv], y[conv], "o", color="C0", label=key)
+        drawn[key] = plotting.values_with_estimates(ax, nu[conv], y[conv], eta[conv], slope[conv], color="C0",
+                                                    label=key, half_width=half_width)
         if (~conv).any():
-            ax.plot(nu[~conv], y[~conv], "o", mfc="none", mec="red", label="not converged")
+            late = plotting.values_with_estimates(ax, nu[~conv], y[~conv], eta[~conv], slope[~conv], color="red",
+                                                  label="not converged", half_width=half_width, mfc="none",
+                                                  mec="red")
+            for k in ("points", "bars", "segments"):
+                drawn[key][k] += late[k]
         if key == force and np.isfinite(check).any():
             ax.plot(nu[order], check[order], "--", color="C1", lw=1, label="∫ p %sds on the ram" % ("2πr " if axisym else ""))
         ax.set_xlabel(xlabel)
         ax.set_title(titles.get(key, key), fontsize=10)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
+    return fig, drawn
+
+
+def plot_force(rows, out_png, xlabel):
+    """Writes force_vs_nu.png; prints, per panel, the points, error bars and tangents drawn."""
+    fig, drawn = force_figure(rows, xlabel)
     plotting.save(fig, out_png, dpi=130)
+    for key, d in drawn.items():
+        print("%s: %s: %d points, %d error bars, %d DDM tangents"
+              % (os.path.basename(out_png), key, d["points"], d["bars"], d["segments"]))
+    return drawn
 
 
 def plot_walls(runs, walls, out_png):

@@ -6,17 +6,20 @@ tests/regression/, bench/ and scripts/ do not each carry their own launcher and 
   launcher   run flowform (case, output directory, --set overrides, mpirun -np, timeout,
              log file, peak memory by /usr/bin/time -v) and get its exit status, summary and
              log; run_command() for any other command line
-  summary    summary.json: load it, dotted-key access ("linear_solver.factorizations")
+  summary    summary.json: load it, dotted-key access ("linear_solver.factorizations"), the
+             totals over an adaptive loop's cycles (adaptive_totals)
   case       a case XML (or the "parameters" of a summary.json): contact walls, responses,
              the tool boundary, geometry; variants of a case written to a new file
   csvio      boundary_<group>.csv: rows, columns, integrals along the curve
   h5io       solution.h5: mesh and nodal/cell fields (needs h5py and numpy)
-  sweep      sweep values ("0,0.1" or "0:0.5:0.1") and sweep.csv
+  sweep      sweep values ("0,0.1" or "0:0.5:0.1") and sweep.csv (with the estimate and
+             derivative columns)
   numerics   observed order of convergence, Richardson extrapolation, relative difference
   machine    machine and binary information printed with benchmark results
   msh        small edits of gmsh 4 ASCII meshes
   tables     markdown tables of the benchmarks' reports
-  plotting   matplotlib (Agg) helpers shared by the plot scripts (needs matplotlib)
+  plotting   matplotlib (Agg) helpers shared by the plot scripts (needs matplotlib): values
+             with their error bars and DDM tangents, the tool walls in flow order
   checks     the whole-run checks' one line per check and verdict (tests/regression/)
   benchmark  the benchmarks' channel sizes and one timed run (bench/)
 

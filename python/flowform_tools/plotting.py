@@ -3,6 +3,7 @@
     plt = plotting.pyplot()                      # matplotlib with the Agg backend (no display)
     walls = plotting.walls_of_run(run_dir)       # the contact walls, in flow order
     for wall, S, data in plotting.chain_walls(run_dir, walls): ...
+    drawn = plotting.values_with_estimates(ax, x, y, eta, slope)   # error bars, DDM tangents
 
 Needs numpy and matplotlib (Debian: python3-numpy python3-matplotlib; h5py for fields).
 """
@@ -33,6 +34,57 @@ def save(fig, path, dpi=130):
 def grid(*axes):
     for ax in axes:
         ax.grid(alpha=0.3)
+
+
+# ------------------------------------------------------------------------------------------
+# values against a parameter, with their error estimates and derivatives
+
+
+def tangent_half_width(x):
+    """Half the x-extent of a tangent segment drawn through each of the points x: 0.3 of the
+    smallest spacing of the distinct finite values, else 5 % of their magnitude (0.05 for a
+    single value 0)."""
+    xs = np.unique(np.asarray(x, dtype=float)[np.isfinite(x)])
+    if len(xs) > 1:
+        return 0.3 * float(np.min(np.diff(xs)))
+    return 0.05 * max(abs(float(xs[0])), 1.0) if len(xs) else 0.05
+
+
+def values_with_estimates(ax, x, y, eta=None, slope=None, color="C0", label=None, half_width=None,
+                          marker="o", mfc=None, mec=None):
+    """Draws the points (x, y) with error bars ±|eta| and, through each point, a short segment
+    of slope `slope` (the derivative dy/dx: the DDM tangent), x ± half_width (default
+    tangent_half_width(x)). A point whose eta (slope) is nan or None gets no bar (no segment).
+    Returns what it drew: {"points": n, "error_bars": ErrorbarContainer or None, "bars": n,
+    "tangents": LineCollection or None, "segments": n}."""
+    from matplotlib.collections import LineCollection
+    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+
+    def column(v):
+        if v is None:
+            return np.full(len(x), np.nan)
+        return np.array([np.nan if e is None else float(e) for e in v])
+    eta, slope = column(eta), column(slope)
+    shown = np.isfinite(x) & np.isfinite(y)
+    drawn = {"points": int(shown.sum()), "error_bars": None, "bars": 0, "tangents": None, "segments": 0}
+    # small markers under the bars: a 0.5 % bar is a few pixels on a plot of the whole sweep
+    ax.plot(x[shown], y[shown], marker, ls="none", ms=4, color=color, mfc=mfc, mec=mec, label=label, zorder=2)
+    barred = shown & np.isfinite(eta)
+    if barred.any():
+        drawn["error_bars"] = ax.errorbar(x[barred], y[barred], yerr=np.abs(eta[barred]), fmt="none",
+                                          ecolor=color, elinewidth=1.0, capsize=3, zorder=3,
+                                          label="± |error estimate|" if label else None)
+        drawn["bars"] = int(barred.sum())
+    tangent = shown & np.isfinite(slope)
+    if tangent.any():
+        w = tangent_half_width(x) if half_width is None else half_width
+        segments = [[(xi - w, yi - si * w), (xi + w, yi + si * w)]
+                    for xi, yi, si in zip(x[tangent], y[tangent], slope[tangent])]
+        drawn["tangents"] = ax.add_collection(LineCollection(segments, colors="k", linewidths=1.0, zorder=2.5,
+                                                             label="DDM tangent" if label else None))
+        drawn["segments"] = len(segments)
+        ax.autoscale_view()
+    return drawn
 
 
 # ------------------------------------------------------------------------------------------

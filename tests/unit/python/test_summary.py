@@ -1,5 +1,5 @@
 """flowform_tools.summary: loading summary.json (a directory or the file), dotted-path access,
-and what happens when the file is absent or broken."""
+what happens when the file is absent or broken, and the totals over an adaptive loop."""
 import json
 import os
 import tempfile
@@ -88,6 +88,45 @@ class Access(unittest.TestCase):
         self.assertEqual(summary.Summary({"timings": None}).timing("solve", 2.0), 2.0)
         self.assertEqual(self.s.parameters, {"Material": {"Rate Exponent": 5.0}})
         self.assertEqual(summary.Summary({}).parameters, {})
+
+
+# An adaptive run as flowform writes it: the top-level counts and timings are the last cycle's.
+ADAPTIVE = {
+    "newton_iterations": 9, "contact_changes": 0,
+    "timings": {"total": 2.4, "error_estimation": 2.1},
+    "functionals_error_estimate": {"ram_force": 0.0165},
+    "adaptivity": {"seconds": 5.4, "target_met": True, "cycles": [
+        {"cycle": 0, "newton_iterations": 54, "contact_changes": 19, "seconds": 3.0},
+        {"cycle": 1, "newton_iterations": 9, "contact_changes": 0, "seconds": 2.4}]},
+}
+
+
+class AdaptiveTotals(unittest.TestCase):
+    def test_adaptive_run_sums_the_cycles(self):
+        t = summary.adaptive_totals(ADAPTIVE)
+        self.assertEqual((t["cycles"], t["newton_iterations"], t["contact_changes"]), (2, 63, 19))
+        self.assertEqual(t["seconds"], 5.4)
+        self.assertIs(t["target_met"], True)
+        # the cycles do not say what their estimates cost: the last one's, flagged incomplete
+        self.assertEqual(t["estimate_seconds"], 2.1)
+        self.assertFalse(t["estimate_complete"])
+
+    def test_estimate_seconds_of_every_cycle_are_summed(self):
+        doc = json.loads(json.dumps(ADAPTIVE))
+        doc["adaptivity"]["cycles"][0]["estimate_seconds"] = 0.5
+        doc["adaptivity"]["cycles"][1]["timings"] = {"error_estimation": 2.1}
+        t = summary.adaptive_totals(doc)
+        self.assertAlmostEqual(t["estimate_seconds"], 2.6)
+        self.assertTrue(t["estimate_complete"])
+
+    def test_run_without_the_loop(self):
+        t = summary.adaptive_totals({"newton_iterations": 54, "contact_changes": 19,
+                                     "timings": {"total": 3.0, "error_estimation": 0.0}})
+        self.assertEqual((t["cycles"], t["newton_iterations"], t["contact_changes"], t["seconds"]),
+                         (1, 54, 19, 3.0))
+        self.assertIsNone(t["estimate_seconds"])  # no functionals_error_estimate: it did not estimate
+        self.assertIsNone(t["target_met"])
+        self.assertEqual(summary.adaptive_totals(None)["cycles"], 0)
 
 
 if __name__ == "__main__":

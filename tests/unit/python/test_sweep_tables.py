@@ -1,5 +1,5 @@
-"""flowform_tools.sweep (value lists, sweep.csv), tables (markdown), checks (the verdict) and
-benchmark (the channel's size)."""
+"""flowform_tools.sweep (value lists, sweep.csv and its estimate and derivative columns),
+tables (markdown), checks (the verdict) and benchmark (the channel's size)."""
 import argparse
 import contextlib
 import io
@@ -52,6 +52,70 @@ class SweepCsv(unittest.TestCase):
             self.assertEqual(rows[0], {"dir": os.path.join(d, "nu_0"), "nu": "0.1", "force": ""})
             self.assertEqual(sweep.num(rows[1]["force"]), 1 / 3)  # repr: the float comes back exactly
             self.assertIsNone(sweep.read(os.path.join(d, "absent")))
+
+
+WALLS = ["container", "die_face", "die_land"]
+FRICTION = ["Boundary Conditions/%s/Friction Coefficient" % w for w in WALLS]
+
+
+class SensitivityNames(unittest.TestCase):
+    def test_every_wall_is_the_one_parameter(self):
+        self.assertEqual(sweep.sensitivity_names(FRICTION, WALLS), ["Friction Coefficient"])
+        self.assertEqual(sweep.sensitivity_names(FRICTION[::-1], WALLS), ["Friction Coefficient"])
+
+    def test_some_walls_one_name_each(self):
+        self.assertEqual(sweep.sensitivity_names(FRICTION[:2], WALLS),
+                         ["Friction Coefficient:container", "Friction Coefficient:die_face"])
+        self.assertEqual(sweep.sensitivity_names(["Boundary Conditions/die_land/Shear Factor"], WALLS),
+                         ["Shear Factor:die_land"])
+
+    def test_material_and_other_paths(self):
+        self.assertEqual(sweep.sensitivity_names(["Material/Rate Exponent"], WALLS), ["Rate Exponent"])
+        self.assertIsNone(sweep.sensitivity_names(["Mesh/Geo Parameters/h"], WALLS))
+        self.assertIsNone(sweep.sensitivity_names(["Material/Rate Exponent", "Mesh/Geo Parameters/h"], WALLS))
+
+
+SUMMARY = {
+    "newton_iterations": 9, "contact_changes": 0, "timings": {"total": 2.4, "error_estimation": 2.1},
+    "functionals": {"ram_force": 3.7, "dead_zone": 0.07},
+    "functionals_error_estimate": {"ram_force": 0.0165, "dead_zone": -0.0098},
+    "sensitivities": {"ram_force": {"Friction Coefficient:container": 3.0, "Friction Coefficient:die_face": 1.25}},
+    "sensitivities_error_estimate": {"ram_force": {"Friction Coefficient:container": -0.5}},
+    "adaptivity": {"seconds": 5.4, "target_met": False, "cycles": [
+        {"newton_iterations": 54, "contact_changes": 19}, {"newton_iterations": 9, "contact_changes": 0}]},
+}
+
+
+class EstimateColumns(unittest.TestCase):
+    def test_names(self):
+        self.assertEqual(sweep.estimate_column_names(["ram_force"]),
+                         ["ram_force_error_estimate", "ram_force_dnu", "ram_force_dnu_error_estimate"])
+
+    def test_columns_of_a_run(self):
+        walls = ["Friction Coefficient:container", "Friction Coefficient:die_face"]
+        row = sweep.estimate_columns(SUMMARY, ["ram_force", "dead_zone"], walls)
+        self.assertEqual(row["ram_force_error_estimate"], 0.0165)
+        self.assertEqual(row["dead_zone_error_estimate"], -0.0098)  # signed, as flowform writes it
+        self.assertEqual(row["ram_force_dnu"], 4.25)  # the two walls' derivatives add up
+        self.assertIsNone(row["ram_force_dnu_error_estimate"])  # die_face's has no estimate
+        self.assertIsNone(row["dead_zone_dnu"])
+        self.assertEqual((row["cycles"], row["target_met"], row["newton_iterations_total"],
+                          row["contact_changes_total"], row["time_error_estimation"]), (2, 0, 63, 19, 2.1))
+        self.assertEqual(set(row), set(sweep.estimate_column_names(["ram_force", "dead_zone"]) + sweep.RUN_COLUMNS))
+
+    def test_a_derivative_needs_every_parameter(self):
+        row = sweep.estimate_columns(SUMMARY, ["ram_force"], ["Friction Coefficient:container", "Rate Exponent"])
+        self.assertIsNone(row["ram_force_dnu"])
+        row = sweep.estimate_columns(SUMMARY, ["ram_force"], None)  # no sensitivity asked for
+        self.assertIsNone(row["ram_force_dnu"])
+        self.assertIsNone(row["ram_force_dnu_error_estimate"])
+
+    def test_run_without_estimate(self):
+        row = sweep.estimate_columns({"functionals": {"ram_force": 3.6}, "newton_iterations": 54},
+                                     ["ram_force"], ["Friction Coefficient"])
+        self.assertIsNone(row["ram_force_error_estimate"])
+        self.assertIsNone(row["target_met"])
+        self.assertEqual(row["newton_iterations_total"], 54)
 
 
 class Markdown(unittest.TestCase):
