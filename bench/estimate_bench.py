@@ -3,13 +3,16 @@ Estimation/Method and its share of the run's time, on the scenes of issue 26 par
 
 usage: scripts/python bench/estimate_bench.py [FLOWFORM] [--methods "Newton Step,Two-Level"]
                                  [--scenes plane,axisym,channel,swell] [--fine] [--steps N]
-                                 [--workdir /tmp/flowform_estimate_bench]
+                                 [--adaptive 0.005,0.002] [--workdir /tmp/flowform_estimate_bench]
 
 Every run solves the scene once (Adaptivity/Enabled=false) and estimates with each method; the
 row gives the response, its estimate eta, the true error against the reference, the effectivity
 eta / (ref - value), the estimate's seconds and its share of the run's total (summary.json
 timings: total = setup + solve + sensitivities + estimate + output), and where the estimate's
 time went (error_estimation.timings). --fine adds the next finer mesh of each scene.
+--adaptive adds the plane and axisymmetric extrusion scenes as shipped (adaptive loop, nu = 0.1)
+at these targets: the last cycle's value and estimate, and the estimates' seconds summed over the
+cycles (adaptivity.cycles[].error_estimation_seconds) against the loop's (adaptivity.seconds).
 
 References (true errors):
 - extrusion, plane and axisymmetric, nu = 0, 0.1, 0.3 on all three walls: the F_inf of the
@@ -80,6 +83,7 @@ def main():
     ap.add_argument("--fine", action="store_true", help="also the next finer mesh of each scene")
     ap.add_argument("--steps", type=int, help="Error Estimation/Newton Steps (default: the case's)")
     ap.add_argument("--sets", nargs="*", default=[], help="more --set entries for every run")
+    ap.add_argument("--adaptive", help="targets of the adaptive rows, e.g. 0.005,0.002 (none: no adaptive rows)")
     ap.add_argument("--workdir", default="/tmp/flowform_estimate_bench")
     a = ap.parse_args()
     print("| scene | method | dofs | value | eta | true error | effectivity | dphi/dh eff. | estimate s | "
@@ -114,6 +118,26 @@ def main():
             print(f"| {label} | {method}{status} | {s.get('dofs', '–')} | {fmt(value, '.5f')} | {fmt(eta, '.4g')} | "
                   f"{fmt(true, '.4g')} | {fmt(eff, '.2f')} | {fmt(deff, '.2f')} | {fmt(seconds, '.2f')} | "
                   f"{fmt(total, '.2f')} | {fmt(share, '.0%')} | {parts} |", flush=True)
+    for target in (a.adaptive.split(",") if a.adaptive else []):
+        for name, case in (("plane", "xml/extrusion.xml"), ("axisym", "xml/extrusion_axisym.xml")):
+            for method in a.methods.split(","):
+                label = f"{name} nu=0.1 adaptive {float(target):.1%}"
+                out = os.path.join(a.workdir, (label + "_" + method).replace(" ", "_").replace("=", "").replace("%", ""))
+                sets = [f"Adaptivity/Target Relative Error={target}", f"Error Estimation/Method={method}"] + a.sets
+                run = launcher.run(a.flowform, os.path.join(root, case), out, sets, quiet=True, clean=True)
+                s = summary.load(out) or {}
+                value = (s.get("functionals") or {}).get("ram_force")
+                eta = (s.get("functionals_error_estimate") or {}).get("ram_force")
+                true = F_REF[(name, "0.1")] - value if value is not None else None
+                eff = eta / true if eta is not None and true else None
+                cycles = (s.get("adaptivity") or {}).get("cycles") or []
+                seconds = sum(c.get("error_estimation_seconds", 0.0) for c in cycles)
+                total = (s.get("adaptivity") or {}).get("seconds")
+                share = seconds / total if total else None
+                status = "" if run.status == 0 else f" (exit {run.status})"
+                print(f"| {label} | {method}{status} | {s.get('dofs', '–')} ({len(cycles)} cycles) | {fmt(value, '.5f')} | "
+                      f"{fmt(eta, '.4g')} | {fmt(true, '.4g')} | {fmt(eff, '.2f')} | – | {fmt(seconds, '.2f')} | "
+                      f"{fmt(total, '.2f')} | {fmt(share, '.0%')} | |", flush=True)
 
 
 if __name__ == "__main__":

@@ -134,13 +134,13 @@ static void buildValidCaseParameters(const ValidList& valid) {
     doc.back() = '.';
     Teuchos::setStringToIntegralParameter<int>("Method", "None", doc, names(), &estimation);
   }
-  estimation.set("Newton Steps", 5,
-                 "Method = Newton Step: at most this many Newton steps on the refined mesh (one assembly and "
-                 "factorization each)",
+  estimation.set("Newton Steps", 8,
+                 "Method = Newton Step: at most this many Newton steps (assemblies and factorizations) on the refined "
+                 "mesh",
                  intInRange(1, 50));
   estimation.set("Step Tolerance", 0.1,
-                 "Method = Newton Step: the steps stop when the last one moved every response by at most this "
-                 "fraction of its distance from the coarse value (of its estimate)",
+                 "Method = Newton Step: the steps stop when a chord step moves every differentiable response by at "
+                 "most this fraction of its distance from the coarse value (of its estimate)",
                  inRange(0.0, 1.0));
   estimation.set("Order", 1.0,
                  "p, the order in h at which the responses' error falls under uniform refinement: 1 where a singular "
