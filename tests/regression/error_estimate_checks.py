@@ -8,7 +8,7 @@ usage: error_estimate_checks.py FLOWFORM SOURCE_DIR WORKDIR
    wall's x-reaction -4 exactly on every mesh. The refined mesh gives the same value, so the
    estimate must vanish up to the solver tolerance: |eta| <= 1e-8 (Newton stops at |F| ~ 1e-10;
    the factor 2 of the Order-1 extrapolation and the summed reactions allow 100x that; the Newton
-   steps stop when no response moves, at a refined residual of the same size).
+   Step's chord step leaves a residual of that size at n = 5: measured 4e-10, 2e-15 Newtonian).
    Newtonian and n = 5, sigma0 = 0.5, N = 4.
 2. Effectivity against an exact solution: the channel's flow rate through the outlet, exact
    Q = 2 gamma (sqrt3 G)^(n+1) H^(n+2) / (G (n+2)) for sigma0 = 0 (docs/verification.md; the
@@ -20,10 +20,10 @@ usage: error_estimate_checks.py FLOWFORM SOURCE_DIR WORKDIR
    window), F_ref fitted to F_inf + a hc + b h² over two mesh families
    (bench/extrusion_references.py; docs/BENCHMARKS.md §10) with an uncertainty of at most 4 %
    of the true errors here, and the steps' own uncertainty at most Step Tolerance = 10 % of the
-   estimate: plane nu = 0 (measured 0.96), nu = 0.1 (0.94), axisymmetric nu = 0 (0.97),
-   nu = 0.1 (0.97); dF/dnu at nu = 0, plane (1.03) and axisymmetric (1.04); plane nu = 0.1 on
-   quadrilaterals (Q1, the all-quad subdivision, 7737 dofs). The measured values are 0.2 or more
-   inside the window, several times both uncertainties. The cases where the estimate fails
+   estimate: plane nu = 0 (measured 0.98), nu = 0.1 (0.92), axisymmetric nu = 0 (0.99),
+   nu = 0.1 (1.00); dF/dnu at nu = 0, plane (0.99) and axisymmetric (1.01); plane nu = 0.1 on
+   quadrilaterals (Q1, the all-quad subdivision, 7737 dofs: 0.89, the error of the other sign).
+   The measured values are 0.19 or more inside the window, several times both uncertainties. The cases where the estimate fails
    (docs/theory.md §7: nu = 0.3, plane 0.67, axisymmetric -0.05 by the Newton steps, 0.66 and
    -0.44 by the two-level estimate; dF/dnu at nu = 0.1 and 0.3) are reported, not asserted.
 4. Adaptivity (the default method's estimates, the two-level estimate's indicators): the plane
@@ -118,7 +118,7 @@ def main():
     eta = (s.get("functionals_error_estimate") or {}).get("ram_force")
     ref = REFERENCE[("xml/extrusion.xml", "0.1")][0]
     eff = eta / (ref - force) if force is not None and eta is not None else None
-    failed += checks.check(run.status == 0 and eff is not None and 0.5 <= eff <= 2.0,
+    failed += checks.check(run.status == 0 and eff is not None and 0.7 <= eff <= 1.5,
                     f"extrusion on quadrilaterals: F = {force}, estimate {eta}, true {ref - (force or 0):.4g}, "
                     f"effectivity {eff}")
 
