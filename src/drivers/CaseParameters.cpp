@@ -247,7 +247,7 @@ void validateCase(ParameterList& params) {
       throw InputError("Mesh/File '" + file + "' is not a .geo, and the case asks for adaptivity (the Adaptivity "
                        "sublist, Enabled by default): the adaptive loop makes each new mesh by remeshing the .geo "
                        "geometry through gmsh with a size field, which a fixed .msh cannot give. Either solve this "
-                       "mesh once with --set \"Adaptivity/Enabled=false\" (add \"Error Estimation/Method=Two-Level\" "
+                       "mesh once with --set \"Adaptivity/Enabled=false\" (add \"Error Estimation/Method=Newton Step\" "
                        "for an error estimate), or refine it uniformly with \"Mesh/Uniform Refinements=N\" and "
                        "Adaptivity/Enabled=false, or give the .geo");
   }
