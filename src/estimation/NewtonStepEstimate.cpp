@@ -162,8 +162,8 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
   estimate.seconds = secondsSince(start);
   log() << "error estimate: " << factorizations << " Newton step(s) and " << chordSteps
         << " chord step(s) on the refined mesh (" << estimate.refinedDofs << " dofs): |R_f| "
-        << estimate.details["residual_0"] << " -> " << estimate.details["residual_" + std::to_string(factorizations)]
-        << " before the last chord step\n";
+        << estimate.details["residual_0"] << " at I u_h, "
+        << estimate.details["residual_" + std::to_string(factorizations)] << " at the last Newton iterate\n";
   return estimate;
 }
 
