@@ -26,7 +26,9 @@
 // (dφ_f/dh − dφ_h/dh) / (1 − 2^(−p)). The adaptive loop's indicators are the two-level
 // estimate's, made the same way (estimation/RefinedRun addIndicators at I u_h with the zone
 // limits left free), which costs one more factorization: the steps start from the zone limits
-// decided, where the die lip's penalty residual would take the indicators (TwoLevelEstimate.cpp).
+// decided, where the die lip's penalty residual takes the indicators (TwoLevelEstimate.cpp).
+// Measured: the indicators from the first step's factors there coarsen the bulk cycle after
+// cycle, and the extrusion scenes' loops end unmet after 8 cycles (docs/BENCHMARKS.md §15).
 //
 // Neglected: status changes the refined status loop would make (none on the extrusion at
 // ν ≤ 0.1 from the carried statuses); statuses decided inside the residual (a semi-smooth
