@@ -4,8 +4,8 @@
 // cycle's solution and contact statuses, interpolated: no continuation), estimate every
 // response's error (Error Estimation/Method, Newton Step when None: EstimationMethods.hpp) with
 // nodal indicators for the target responses, stop when every target has |η|/|φ| ≤ Target
-// Relative Error, else size mesh k+1 from the indicators and let gmsh mesh the .geo anew with that size field (curves and physical groups exact). The
-// case's Mesh/Uniform Refinements and Size Factor shape the first mesh only: later meshes take
+// Relative Error, else size mesh k+1 from the indicators and let gmsh mesh the .geo anew with
+// that size field (curves and physical groups exact). The case's Mesh/Uniform Refinements and Size Factor shape the first mesh only: later meshes take
 // the field's sizes as they are (the summary's parameters, those of the last cycle, say so).
 //
 // Sizing (error equidistribution at the least node count). With e_a = Σ_targets (nodal share
