@@ -8,6 +8,7 @@
 #include "flowform/bc/BoundaryConditions.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/NumberRange.hpp"
+#include "flowform/estimation/EstimationMethods.hpp"
 #include "flowform/freesurface/FreeSurfaceLoop.hpp"
 #include "flowform/drivers/OutputFields.hpp"
 #include "flowform/mesh/MeshReader.hpp"
@@ -117,14 +118,30 @@ static void buildValidCaseParameters(const ValidList& valid) {
       .setParameters(*Responses::validParameters());
   ParameterList& estimation =
       valid->sublist("Error Estimation", false, "a posteriori error estimates of the responses (docs/theory.md §7)");
-  Teuchos::setStringToIntegralParameter<int>(
-      "Method", "None",
-      "None; Two-Level: every response (and sensitivity) gets an estimate of its discretization error from a "
-      "solve on the uniformly refined mesh started from the interpolated solution and contact statuses (and "
-      "the converged free surfaces' shape), eta = (phi_refined - phi) / (1 - 2^-Order), written to summary.json "
-      "functionals_error_estimate, sensitivities_error_estimate and sensitivities_total_shape_error_estimate "
-      "(docs/theory.md §7)",
-      Teuchos::tuple<std::string>("None", "Two-Level"), &estimation);
+  {
+    // The choices and their description from the registry (estimation/EstimationMethods.hpp).
+    Teuchos::Array<std::string> names(1, "None");
+    std::string doc =
+        "None, or a method by which every response (and sensitivity) gets an estimate of its discretization "
+        "error from the uniformly refined mesh, eta = (phi_refined - phi) / (1 - 2^-Order), written to "
+        "summary.json functionals_error_estimate, sensitivities_error_estimate and "
+        "sensitivities_total_shape_error_estimate (docs/theory.md §7); the adaptive loop uses the case's method, " +
+        estimationMethods().front().name + " when None:";
+    for (const EstimationMethodInfo& method : estimationMethods()) {
+      names.push_back(method.name);
+      doc += " " + method.name + ": " + method.description + ";";
+    }
+    doc.back() = '.';
+    Teuchos::setStringToIntegralParameter<int>("Method", "None", doc, names(), &estimation);
+  }
+  estimation.set("Newton Steps", 8,
+                 "Method = Newton Step: at most this many Newton steps (assemblies and factorizations) on the refined "
+                 "mesh",
+                 intInRange(1, 50));
+  estimation.set("Step Tolerance", 0.1,
+                 "Method = Newton Step: the steps stop when a chord step moves every differentiable response by at "
+                 "most this fraction of its distance from the coarse value (of its estimate)",
+                 inRange(0.0, 1.0));
   estimation.set("Order", 1.0,
                  "p, the order in h at which the responses' error falls under uniform refinement: 1 where a singular "
                  "corner dominates (the extrusion's die lip), 2 for a smooth solution; the estimate is "
@@ -132,7 +149,7 @@ static void buildValidCaseParameters(const ValidList& valid) {
                  inRange(0.1, 10.0));
   ParameterList& adaptivity = valid->sublist(
       "Adaptivity", false,
-      "adaptive meshing to a requested accuracy (docs/theory.md §7): solve, estimate (Two-Level), size the next "
+      "adaptive meshing to a requested accuracy (docs/theory.md §7): solve, estimate (Error Estimation/Method; Newton Step when None), size the next "
       "mesh from the indicators, remesh the .geo through gmsh, carry the solution and contact statuses over, "
       "solve again. No sublist: none of this runs");
   adaptivity.set("Enabled", true,
@@ -233,7 +250,7 @@ void validateCase(ParameterList& params) {
       throw InputError("Mesh/File '" + file + "' is not a .geo, and the case asks for adaptivity (the Adaptivity "
                        "sublist, Enabled by default): the adaptive loop makes each new mesh by remeshing the .geo "
                        "geometry through gmsh with a size field, which a fixed .msh cannot give. Either solve this "
-                       "mesh once with --set \"Adaptivity/Enabled=false\" (add \"Error Estimation/Method=Two-Level\" "
+                       "mesh once with --set \"Adaptivity/Enabled=false\" (add \"Error Estimation/Method=Newton Step\" "
                        "for an error estimate), or refine it uniformly with \"Mesh/Uniform Refinements=N\" and "
                        "Adaptivity/Enabled=false, or give the .geo");
   }

@@ -9,7 +9,7 @@
 #include "flowform/core/Log.hpp"
 #include "flowform/drivers/CaseParameters.hpp"
 #include "flowform/drivers/OutputFields.hpp"
-#include "flowform/estimation/TwoLevelEstimate.hpp"
+#include "flowform/estimation/EstimationMethods.hpp"
 #include "flowform/io/BoundaryCsvWriter.hpp"
 #include "flowform/io/JsonSummary.hpp"
 #include "flowform/io/ResultDirectory.hpp"
@@ -70,13 +70,15 @@ const SolveReport& Simulation::run() {
   if (report.converged && m_sensitivity->requested()) runSensitivity();
   // The adaptive loop estimates itself (with the indicators it needs).
   if (report.converged && exitStatus() == 0 && !adaptivityRequested(parameters()) &&
-      parameters().sublist("Error Estimation").get<std::string>("Method") == "Two-Level")
+      parameters().sublist("Error Estimation").get<std::string>("Method") != "None")
     estimateErrors();
   return report;
 }
 
 void Simulation::estimateErrors(const std::vector<std::string>& indicatorResponses) {
-  *m_estimate = twoLevelEstimate(*this, factory(m_baseDir, m_comm), indicatorResponses);
+  // The case's method; the adaptive loop asks with Method = None too: then the registry's first.
+  const int method = estimationMethodIndex(parameters().sublist("Error Estimation").get<std::string>("Method"));
+  *m_estimate = flowform::estimateErrors(method < 0 ? 0 : method, *this, factory(m_baseDir, m_comm), indicatorResponses);
   if (!m_estimate->failure.empty()) {
     log() << "flowform: NO ERROR ESTIMATE: " << m_estimate->failure << "\n";
     return;

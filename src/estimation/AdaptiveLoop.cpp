@@ -144,7 +144,9 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
                             {"contact_changes", sim->problem().contactChanges()},
                             {"free_surface_iterations", sim->problem().freeSurfaceReport().iterations},
                             {"functionals", sim->functionals()},
-                            {"error_estimate", estimate.functionals}};
+                            {"error_estimate", estimate.functionals},
+                            {"error_estimation_method", estimate.method},
+                            {"error_estimation_seconds", estimate.seconds}};
     met = true;
     for (const std::string& name : targets) {
       const double relative = std::abs(estimate.functionals.at(name)) /

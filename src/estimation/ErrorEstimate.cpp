@@ -5,16 +5,18 @@
 namespace flowform {
 
 void ErrorEstimate::report(nlohmann::json& summary) const {
-  if (!failure.empty()) summary["error_estimation"] = {{"method", "Two-Level"}, {"failure", failure}};
+  if (!failure.empty()) summary["error_estimation"] = {{"method", method}, {"failure", failure}};
   if (!estimated) return;
   summary["functionals_error_estimate"] = nlohmann::json::object();
   for (const auto& [name, eta] : functionals) summary["functionals_error_estimate"][name] = eta;
   if (!sensitivities.empty()) summary["sensitivities_error_estimate"] = sensitivities;
-  summary["error_estimation"] = {{"method", "Two-Level"},
+  summary["error_estimation"] = {{"method", method},
                                  {"order", order},
                                  {"refined_dofs", refinedDofs},
                                  {"refined_functionals", refinedFunctionals},
-                                 {"seconds", seconds}};
+                                 {"seconds", seconds},
+                                 {"timings", timings}};
+  if (!details.empty()) summary["error_estimation"]["details"] = details;
   if (!refinedSensitivities.empty()) summary["error_estimation"]["refined_sensitivities"] = refinedSensitivities;
   if (!sensitivitiesTotalShape.empty()) {
     summary["sensitivities_total_shape_error_estimate"] = sensitivitiesTotalShape;

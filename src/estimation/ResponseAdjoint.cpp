@@ -3,15 +3,17 @@
 namespace flowform {
 
 bool responseAdjoint(FlowModel& model, const Vector& x, const Responses& responses, const std::string& name,
-                     const Mesh& mesh, Vector& z) {
+                     const Mesh& mesh, Vector& z, bool factor) {
   const Assembler& assembler = model.assembler();
   const DofMap& dofMap = assembler.dofMap();
   Vector c(dofMap.ownedMap()), gradient(dofMap.ownedMap());
   if (!responses.reactionWeights(name, mesh, dofMap, assembler.physics().kernel.geometry, c)) return false;
   auto unconstrained = assembler.createJacobian();
   assembler.unconstrainedJacobian(x, *unconstrained);
-  model.restartLinearization();  // the exact K_t at x
-  model.computeJacobian(x);
+  if (factor) {
+    model.restartLinearization();  // the exact K_t at x
+    model.computeJacobian(x);
+  }
   // ∂φ/∂q = J_uncᵀ c, then K_tᵀ z = ∂φ/∂q.
   unconstrained->apply(c, gradient, Teuchos::TRANS);
   model.solveTranspose(gradient, z);

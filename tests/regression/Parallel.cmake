@@ -32,6 +32,14 @@ add_test(NAME parallel_equals_serial_error_estimate
                  ${CMAKE_CURRENT_BINARY_DIR}/parallel_error_estimate --set "Adaptivity/Enabled=false"
                  --set "Error Estimation/Method=Two-Level")
 set_tests_properties(parallel_equals_serial_error_estimate PROPERTIES LABELS "regression" PROCESSORS 2)
+# The Newton Step estimate (the default) on 2 ranks: the refined steps, the chord step and the
+# settling test (collective response evaluations) with the refined mesh partitioned anew.
+add_test(NAME parallel_equals_serial_newton_step_estimate
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py
+                 $<TARGET_FILE:flowform> ${MPIEXEC_EXECUTABLE} 2 ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml
+                 ${CMAKE_CURRENT_BINARY_DIR}/parallel_newton_step_estimate --set "Adaptivity/Enabled=false"
+                 --set "Error Estimation/Method=Newton Step")
+set_tests_properties(parallel_equals_serial_newton_step_estimate PROPERTIES LABELS "regression" PROCESSORS 2)
 # MUMPS factors the distributed matrix itself (no gather): np = 2 and np = 3 against np = 1,
 # with contact (the status loop's decisions) and on the channel. The ranks factor with
 # different pivot orders, so the runs agree to the round-off of the factorization, amplified

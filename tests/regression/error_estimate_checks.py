@@ -1,28 +1,33 @@
-"""The two-level error estimate and the adaptive loop (docs/theory.md §7).
+"""The error estimates (Error Estimation/Method = Newton Step, the default, and Two-Level, its
+reference) and the adaptive loop (docs/theory.md §7).
 
 usage: error_estimate_checks.py FLOWFORM SOURCE_DIR WORKDIR
 
-1. Exact response, zero estimate. The channel (xml/channel.xml, triangles) is driven by the
+1. Exact response, zero estimate, by both methods. The channel (xml/channel.xml, triangles) is driven by the
    inlet traction 4 with u_y = 0 at both ends, so the discrete momentum balance gives the top
    wall's x-reaction -4 exactly on every mesh. The refined mesh gives the same value, so the
    estimate must vanish up to the solver tolerance: |eta| <= 1e-8 (Newton stops at |F| ~ 1e-10;
-   the factor 2 of the Order-1 extrapolation and the summed reactions allow 100x that).
+   the factor 2 of the Order-1 extrapolation and the summed reactions allow 100x that; the Newton
+   Step's chord step leaves a residual of that size at n = 5: measured 4e-10, 2e-15 Newtonian).
    Newtonian and n = 5, sigma0 = 0.5, N = 4.
 2. Effectivity against an exact solution: the channel's flow rate through the outlet, exact
    Q = 2 gamma (sqrt3 G)^(n+1) H^(n+2) / (G (n+2)) for sigma0 = 0 (docs/verification.md; the
    cutoff e0 = 1e-8 changes Q by far less than the errors here), Order = 2 (a smooth solution):
-   Newtonian on N = 8 and n = 3 on N = 8, eta / (Q - Q_h) in [0.5, 2] (measured 1.01 and 0.99).
-3. Effectivity on the extrusion (xml/extrusion.xml, its mesh (0.1, 0.025) without the scene's
-   adaptive loop): eta / (F_ref - F)
-   in [0.5, 2] (the issue's goal), F_ref fitted to F_inf + a hc + b h² over two mesh families
+   Newtonian on N = 8 and n = 3 on N = 8, eta / (Q - Q_h) in [0.5, 2] by both methods (measured
+   1.01 and 0.99 by each).
+3. Effectivity on the extrusion by the default method (Newton Step; xml/extrusion.xml, its mesh
+   (0.1, 0.025) without the scene's adaptive loop): eta / (F_ref - F) in [0.7, 1.5] (the issue's
+   window), F_ref fitted to F_inf + a hc + b h² over two mesh families
    (bench/extrusion_references.py; docs/BENCHMARKS.md §10) with an uncertainty of at most 4 %
-   of the true errors here: plane nu = 0 (measured 0.95), nu = 0.1 (0.92), axisymmetric
-   nu = 0 (0.96), nu = 0.1 (0.95); dF/dnu at nu = 0, plane (0.96) and axisymmetric (0.99);
-   plane nu = 0.1 on quadrilaterals (Q1, the all-quad subdivision, 7737 dofs: 0.96).
-   The cases where the reference is too uncertain or the estimate fails (docs/theory.md §7:
-   plane nu = 0.3, 0.66; axisymmetric nu = 0.3, -0.44; dF/dnu at nu = 0.1 and 0.3) are reported,
-   not asserted.
-4. Adaptivity: the plane and the axisymmetric extrusion as the scene files have them (a 0.5 %
+   of the true errors here, and the steps' own uncertainty at most Step Tolerance = 10 % of the
+   estimate: plane nu = 0 (measured 0.98), nu = 0.1 (0.92), axisymmetric nu = 0 (0.99),
+   nu = 0.1 (1.00); dF/dnu at nu = 0, plane (0.99) and axisymmetric (1.01); plane nu = 0.1 on
+   quadrilaterals (Q1, the all-quad subdivision, 7737 dofs: 0.89, the error of the other sign).
+   The measured values are 0.19 or more inside the window, several times both uncertainties. The cases where the estimate fails
+   (docs/theory.md §7: nu = 0.3, plane 0.67, axisymmetric -0.05 by the Newton steps, 0.66 and
+   -0.44 by the two-level estimate; dF/dnu at nu = 0.1 and 0.3) are reported, not asserted.
+4. Adaptivity (the default method's estimates, the two-level estimate's indicators): the plane
+   and the axisymmetric extrusion as the scene files have them (a 0.5 %
    target on the ram force) meet it as estimated (exit 0), list every cycle, and their true
    errors against F_ref are at most twice the target (effectivity >= 0.5; measured 0.46 % and
    0.05 %). Mesh/Uniform Refinements shapes the first mesh only: from (0.2, 0.05) refined once the
@@ -43,6 +48,8 @@ REFERENCE = {("xml/extrusion.xml", "0.0"): (3.30663, 4.4505), ("xml/extrusion.xm
              ("xml/extrusion_axisym.xml", "0.0"): (18.22393, 52.4114),
              ("xml/extrusion_axisym.xml", "0.1"): (23.11832, None)}
 WALLS = ("container", "die_face", "die_land")
+METHODS = ("Newton Step", "Two-Level")
+DEFAULT = "Error Estimation/Method=Newton Step"
 
 
 def friction(nu):
@@ -54,34 +61,34 @@ def main():
     failed = 0
     channel = os.path.join(source, "xml/channel.xml")
     extrusion = os.path.join(source, "xml/extrusion.xml")
-    for n, sigma0 in (("1.0", "0.0"), ("5.0", "0.5")):
-        out = os.path.join(work, f"channel_n{n}")
+    for (n, sigma0), method in ((c, m) for c in (("1.0", "0.0"), ("5.0", "0.5")) for m in METHODS):
+        out = os.path.join(work, f"channel_n{n}_{method.replace(' ', '_')}")
         sets = ["Mesh/Element Type=Triangle", "Mesh/Geo Parameters/N=4", f"Material/Rate Exponent={n}",
                 f"Material/Yield Stress={sigma0}", "Responses/top_force/Type=Boundary Force",
-                "Responses/top_force/Boundary=top", "Error Estimation/Method=Two-Level"]
+                "Responses/top_force/Boundary=top", f"Error Estimation/Method={method}"]
         run = launcher.run(flowform, channel, out, sets, quiet=True, clean=True)
         s = summary.load(out) or {}
         force = (s.get("functionals") or {}).get("top_force")
         eta = (s.get("functionals_error_estimate") or {}).get("top_force")
         failed += checks.check(run.status == 0 and force is not None and abs(force + 4.0) <= 1e-10 and eta is not None
-                        and abs(eta) <= 1e-8, f"channel n = {n}: exit {run.status}, F = {force}, estimate {eta}")
+                        and abs(eta) <= 1e-8, f"channel n = {n}, {method}: exit {run.status}, F = {force}, estimate {eta}")
 
-    for n, exact in (("1.0", 2.0), ("3.0", 3.6)):
-        out = os.path.join(work, f"channel_rate_n{n}")
+    for (n, exact), method in ((c, m) for c in (("1.0", 2.0), ("3.0", 3.6)) for m in METHODS):
+        out = os.path.join(work, f"channel_rate_n{n}_{method.replace(' ', '_')}")
         sets = ["Mesh/Element Type=Triangle", "Mesh/Geo Parameters/N=8", f"Material/Rate Exponent={n}",
                 "Material/Yield Stress=0.0", "Material/Strain Rate Cutoff=1e-8", "Responses/Q/Type=Flow Rate",
-                "Responses/Q/Boundary=outlet", "Error Estimation/Method=Two-Level", "Error Estimation/Order=2"]
+                "Responses/Q/Boundary=outlet", f"Error Estimation/Method={method}", "Error Estimation/Order=2"]
         run = launcher.run(flowform, channel, out, sets, quiet=True, clean=True)
         s = summary.load(out) or {}
         q = (s.get("functionals") or {}).get("Q")
         eta = (s.get("functionals_error_estimate") or {}).get("Q")
         eff = eta / (exact - q) if q is not None and eta is not None else None
         failed += checks.check(run.status == 0 and eff is not None and 0.5 <= eff <= 2.0,
-                        f"channel flow rate n = {n}: Q = {q} (exact {exact}), estimate {eta}, effectivity {eff}")
+                        f"channel flow rate n = {n}, {method}: Q = {q} (exact {exact}), estimate {eta}, effectivity {eff}")
 
     for (case, nu), (ref, dref) in REFERENCE.items():
         out = os.path.join(work, f"{os.path.basename(case)[:-4]}_nu{nu}")
-        sets = ["Adaptivity/Enabled=false", "Error Estimation/Method=Two-Level"] + friction(nu)
+        sets = ["Adaptivity/Enabled=false", DEFAULT] + friction(nu)
         if dref is not None:
             sets.append("Sensitivity/Parameters={Friction Coefficient}")
         run = launcher.run(flowform, os.path.join(source, case), out, sets, quiet=True, clean=True)
@@ -89,21 +96,21 @@ def main():
         force = (s.get("functionals") or {}).get("ram_force")
         eta = (s.get("functionals_error_estimate") or {}).get("ram_force")
         eff = eta / (ref - force) if force is not None and eta is not None else None
-        failed += checks.check(run.status == 0 and eff is not None and 0.5 <= eff <= 2.0,
+        failed += checks.check(run.status == 0 and eff is not None and 0.7 <= eff <= 1.5,
                         f"{case} nu = {nu}: F = {force}, estimate {eta}, true {ref - (force or 0):.4g}, "
                         f"effectivity {eff}")
         if dref is not None:
             d = ((s.get("sensitivities") or {}).get("ram_force") or {}).get("Friction Coefficient")
             deta = ((s.get("sensitivities_error_estimate") or {}).get("ram_force") or {}).get("Friction Coefficient")
             deff = deta / (dref - d) if d is not None and deta is not None else None
-            failed += checks.check(deff is not None and 0.5 <= deff <= 2.0,
+            failed += checks.check(deff is not None and 0.7 <= deff <= 1.5,
                             f"{case} nu = {nu}: dF/dnu = {d}, estimate {deta}, true {dref - (d or 0):.4g}, "
                             f"effectivity {deff}")
 
     # Quadrilaterals (Q1/Q1, the .geo's all-quad subdivision): the refined mesh splits every cell
     # in four as well; the error there is of the other sign (F above F_ref).
     out = os.path.join(work, "extrusion_quads")
-    run = launcher.run(flowform, extrusion, out, ["Adaptivity/Enabled=false", "Error Estimation/Method=Two-Level",
+    run = launcher.run(flowform, extrusion, out, ["Adaptivity/Enabled=false", DEFAULT,
                                                  "Mesh/Element Type=Quadrilateral", "Mesh/Geo Parameters/quads=1"],
                        quiet=True, clean=True)
     s = summary.load(out) or {}
@@ -111,7 +118,7 @@ def main():
     eta = (s.get("functionals_error_estimate") or {}).get("ram_force")
     ref = REFERENCE[("xml/extrusion.xml", "0.1")][0]
     eff = eta / (ref - force) if force is not None and eta is not None else None
-    failed += checks.check(run.status == 0 and eff is not None and 0.5 <= eff <= 2.0,
+    failed += checks.check(run.status == 0 and eff is not None and 0.7 <= eff <= 1.5,
                     f"extrusion on quadrilaterals: F = {force}, estimate {eta}, true {ref - (force or 0):.4g}, "
                     f"effectivity {eff}")
 

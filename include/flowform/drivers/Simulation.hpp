@@ -56,7 +56,8 @@ class Simulation final : public CaseRun {
   const Teuchos::ParameterList& parameters() const { return m_problem->parameters(); }
   /// The error estimate of the responses (its `estimated` false when none was made).
   const ErrorEstimate& errorEstimate() const override { return *m_estimate; }
-  /// Estimates the responses' errors now (the two-level estimate), with nodal indicators for
+  /// Estimates the responses' errors now (by the case's Error Estimation/Method, the registry's first when
+  /// None: estimation/EstimationMethods.hpp), with nodal indicators for
   /// `indicatorResponses` (the adaptive loop's targets). run() calls it when the case's
   /// Error Estimation/Method asks.
   void estimateErrors(const std::vector<std::string>& indicatorResponses = {}) override;

@@ -1,12 +1,13 @@
 // Adaptive meshing to a requested accuracy (the case's Adaptivity sublist; docs/theory.md §7).
 //
 // Cycle k: solve on mesh k (cycle 0: the case's own mesh; later ones start from the previous
-// cycle's solution and contact statuses, interpolated: no continuation), estimate every
-// response's error (TwoLevelEstimate) with nodal indicators for the target responses, stop when
-// every target has |η|/|φ| ≤ Target Relative Error, else size mesh k+1 from the indicators and
-// let gmsh mesh the .geo anew with that size field (curves and physical groups exact). The
-// case's Mesh/Uniform Refinements and Size Factor shape the first mesh only: later meshes take
-// the field's sizes as they are (the summary's parameters, those of the last cycle, say so).
+// cycle's solution and contact statuses, interpolated: no continuation), estimate every response's
+// error (Error Estimation/Method, Newton Step when None: EstimationMethods.hpp) with nodal
+// indicators for the target responses, stop when every target has |η|/|φ| ≤ Target Relative Error,
+// else size mesh k+1 from the indicators and let gmsh mesh the .geo anew with that size field
+// (curves and physical groups exact). The case's Mesh/Uniform Refinements and Size Factor shape the
+// first mesh only: later meshes take the field's sizes as they are (the summary's parameters, those
+// of the last cycle, say so).
 //
 // Sizing (error equidistribution at the least node count). With e_a = Σ_targets (nodal share
 // of |η_φ|)/(tol |φ|) at node a of mesh k (so Σ_a e_a ≈ Σ_targets |η_φ|/(tol |φ|)), h_a the mean

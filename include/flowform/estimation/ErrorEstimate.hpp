@@ -1,4 +1,5 @@
-// What an error estimate of a run's responses found (TwoLevelEstimate.hpp says how it is made).
+// What an error estimate of a run's responses found (EstimationMethods.hpp lists how it can be
+// made: NewtonStepEstimate.hpp, TwoLevelEstimate.hpp).
 #pragma once
 
 #include <map>
@@ -13,6 +14,7 @@ namespace flowform {
 
 struct ErrorEstimate {
   bool estimated = false;
+  std::string method;  ///< the Error Estimation/Method that made it
   /// Why there is no estimate although one was asked for (the refined solve did not converge).
   std::string failure;
   double order = 1.0;  ///< p
@@ -32,10 +34,14 @@ struct ErrorEstimate {
   std::map<std::string, std::vector<double>> indicators;
   GO refinedDofs = 0;
   double seconds = 0.0;
+  /// Where the seconds went (refined setup, transfer, assembly, factorization, solves, ...).
+  std::map<std::string, double> timings;
+  /// What the method measured of itself (e.g. the refined residual norms before and after the step).
+  std::map<std::string, double> details;
 
   /// "functionals_error_estimate", "sensitivities_error_estimate",
   /// "sensitivities_total_shape_error_estimate" and "error_estimation"
-  /// (method, order, refined dofs and responses, seconds) into the summary.
+  /// (method, order, refined dofs and responses, seconds, timings, details) into the summary.
   void report(nlohmann::json& summary) const;
 };
 

@@ -15,9 +15,10 @@ namespace flowform {
 /// ζ = c − z for the response `name` at x (owned map): z the adjoint, zero on the held velocity
 /// components (the test space), and c the response's weights on its group's held components,
 /// so ζ is the adjoint that carries the response's Dirichlet data and has no layer at the group.
-/// The Jacobian at x is factored exactly (the model's factors are then K_t(x)). False, ζ
-/// untouched and nothing factored, for a response not linear in the reactions.
+/// With `factor` the Jacobian at x is factored exactly (the model's factors are then K_t(x));
+/// without, the model's factors must already be those of the exact K_t(x). False, ζ untouched
+/// and nothing factored, for a response not linear in the reactions.
 bool responseAdjoint(FlowModel& model, const Vector& x, const Responses& responses, const std::string& name,
-                     const Mesh& mesh, Vector& z);
+                     const Mesh& mesh, Vector& z, bool factor = true);
 
 }  // namespace flowform

@@ -1,4 +1,6 @@
-// The two-level error estimate of every response (docs/theory.md §7).
+// The two-level error estimate of every response (Error Estimation/Method = Two-Level;
+// docs/theory.md §7): the reference the cheaper Newton Step estimate (NewtonStepEstimate.hpp) is
+// measured against.
 //
 // The mesh is refined once uniformly (every cell split in four, the .geo's curves kept); the
 // converged solution u_h is interpolated on it (exactly: P1/Q1 fields are nested) with the
@@ -41,11 +43,17 @@
 
 namespace flowform {
 
-/// The two-level estimate of `coarse`'s converged responses (and sensitivities, when computed),
-/// with indicators for `indicatorResponses`; the refined run is made by `makeRun` (the case on
-/// the mesh refined once more). When the refined solve does not converge there is no estimate:
-/// `estimated` false and `failure` says why. Collective.
-ErrorEstimate twoLevelEstimate(const CaseRun& coarse, const CaseRunFactory& makeRun,
-                               const std::vector<std::string>& indicatorResponses);
+struct TwoLevelEstimate {
+  static constexpr const char* kName = "Two-Level";
+  static constexpr const char* kDescription =
+      "the case solved again on the uniformly refined mesh from the interpolated solution and contact statuses "
+      "(Newton, the contact-status loop, the free-surface loop: the reference, about half of a run)";
+  /// The two-level estimate of `coarse`'s converged responses (and sensitivities, when
+  /// computed), with indicators for `indicatorResponses`; the refined run is made by `makeRun`
+  /// (the case on the mesh refined once more). When the refined solve does not converge there
+  /// is no estimate: `estimated` false and `failure` says why. Collective.
+  static ErrorEstimate estimate(const CaseRun& coarse, const CaseRunFactory& makeRun,
+                                const std::vector<std::string>& indicatorResponses);
+};
 
 }  // namespace flowform
