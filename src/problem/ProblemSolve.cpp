@@ -30,7 +30,11 @@ const SolveReport& Problem::solve() {
   const double firstMinimum = m_walls.empty() ? 0.0 : std::max(caseMinimum, std::ldexp(1.0, -kFirstTryHalvings));
   // From another mesh's converged state (startFrom): Newton at the target from there; resolve()
   // falls back to the predictor and the continuation itself if that fails.
-  m_report = m_warmStart ? solver.resolve(*m_solution, m_physics) : solver.solve(*m_solution, m_physics, firstMinimum);
+  // With complementarity walls the first solve's state is only where their Newton starts: its
+  // last stage stops at kLooseFirstSolve (enterComplementarity converges it tightly).
+  const double loose = m_statusLoop->complementarity() && !m_walls.empty() ? kLooseFirstSolve : 0.0;
+  m_report = m_warmStart ? solver.resolve(*m_solution, m_physics)
+                         : solver.solve(*m_solution, m_physics, firstMinimum, loose);
   auto again = [&](bool stick, const char* how) {
     log() << "flowform: the first solve failed (" << m_report.message << "); solving again " << how << "\n";
     Tpetra::deep_copy(*m_solution, initial);
@@ -76,7 +80,7 @@ void Problem::enterComplementarity(NonlinearSolver& solver) {
   if (corners > 0) log() << "contact: " << corners << " node(s) at convex tool corners in tension released\n";
   int nodes = 0;
   for (ContactWall& wall : m_walls) nodes += wall.enterComplementarity();
-  if (nodes == 0 && corners == 0) return;
+  if (nodes == 0 && corners == 0 && m_warmStart) return;  // the warm re-solve was tight
   const Vector converged(*m_solution, Teuchos::Copy);
   const SolveReport r = solver.resolve(*m_solution, m_physics);
   m_report.newtonIterations += r.newtonIterations;
@@ -96,6 +100,13 @@ void Problem::enterComplementarity(NonlinearSolver& solver) {
   }
   Tpetra::deep_copy(*m_solution, converged);
   m_statusLoop->fallBackToStatuses();
+  // The status loop starts from a tightly converged state.
+  const SolveReport tight = solver.resolve(*m_solution, m_physics);
+  m_report.newtonIterations += tight.newtonIterations;
+  m_report.newtonPerSolve.push_back(tight.newtonIterations);
+  m_report.converged = tight.converged;
+  m_report.residualNorm = tight.residualNorm;
+  if (!tight.converged) m_report.message = tight.message;
 }
 
 std::string Problem::firstSolveHints() const {

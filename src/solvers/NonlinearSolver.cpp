@@ -232,7 +232,7 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
   return full;
 }
 
-SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double minimumStep) {
+SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double minimumStep, double finalLooseTolerance) {
   SolveReport report;
   const double atol = m_params.get<double>("Absolute Residual Tolerance");
   const double rtol = m_params.get<double>("Relative Residual Tolerance");
@@ -306,7 +306,9 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
     log() << "  stage lambda = " << next << ": n = " << rateExponent(stage.material)
           << ", e0 = " << stage.material.cutoff << "\n";
     Tpetra::deep_copy(x, xConverged);
-    StageReport sr = newton(x, stage);
+    NewtonOptions stageOptions;
+    if (next == 1.0) stageOptions.looseTolerance = finalLooseTolerance;
+    StageReport sr = newton(x, stage, stageOptions);
     report.stages.push_back(sr);
     report.newtonIterations += sr.newtonIterations;
     report.residualNorm = sr.residualNorm;

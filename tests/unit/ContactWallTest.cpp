@@ -329,4 +329,96 @@ TEUCHOS_UNIT_TEST(ContactWall, BadInputNamesTheGroup) {
   }
 }
 
+
+// ---------------------------------------------------------------------------------------
+// Complementarity walls (docs/contact.md, "Complementarity"): the normal force α_n max(u·n, 0)
+// and the friction integrated up to the interpolated zero of φ inside the segment that holds
+// the zone limit, by hand; its continuity as the limit reaches a node; its AD tangent in all
+// nine stencil values against central differences.
+// ---------------------------------------------------------------------------------------
+
+/// Stencil values of the middle node 1 of the bottom wall (n = (0, −1)): u_y = −g, so u·n = g.
+std::array<double, ContactWall::kNodeStencilSize> middle(double g0, double g1, double g2, const double* p) {
+  return {0.5, -g1, p[0], p[1], p[2], 0.5, -g0, 0.5, -g2};
+}
+
+/// ∫_0^a N_1 (N_1 p1 + N_2 p2) L ds on the segment 1→2 (N_1 = 1 − s, N_2 = s).
+double partIntegral(double a, double p1, double p2) {
+  return kL * (p1 * (1.0 - std::pow(1.0 - a, 3)) / 3.0 + p2 * (a * a / 2.0 - a * a * a / 3.0));
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, ComplementarityPushesAndIntegratesFrictionToTheZoneLimit) {
+  ContactWall wall = makeWall("Coulomb", 0.2);
+  const int entered = wall.enterComplementarity();  // (the macro evaluates its arguments twice)
+  TEST_EQUALITY_CONST(entered, 3);
+  const double p[3] = {1.0, 2.0, 4.0};
+  // Node 0 and 1 press (u·n = 0.01: φ = κ_n u·n = 1), node 2 separates (u·n = −0.02 = φ): the
+  // segment 1–2 is in contact up to s* = 1/1.02.
+  const auto v = middle(0.01, 0.01, -0.02, p);
+  const double sStar = 1.0 / 1.02;
+  const double fHat = 0.2 * (kL * (2.0 / 3 + 1.0 / 6) + partIntegral(sStar, 2.0, 4.0));
+  double R[2] = {0.0, 0.0};
+  wall.addNodeResidual(1, v.data(), R);
+  TEST_FLOATING_EQUALITY(R[0], fHat, 1e-13);                        // slip: α_t |u_t| = 10 > f̂
+  TEST_FLOATING_EQUALITY(R[1], 100.0 * 2.0 * 0.01 * (-1.0), 1e-14);  // α_n u·n along n
+  // Separating, node 1 gets no normal force, but its share of the friction on the part of
+  // segment 0–1 in contact (φ_0 = 1, φ_1 = −0.01: up to s* = 1/1.01 from node 0).
+  const auto separated = middle(0.01, -0.01, -0.02, p);
+  double S[2] = {0.0, 0.0};
+  wall.addNodeResidual(1, separated.data(), S);
+  TEST_EQUALITY_CONST(S[1], 0.0);
+  const double a = 1.0 / 1.01;  // from node 0: ∫_0^a N_1 (N_0 p0 + N_1 p1) L ds with N_1 = s
+  const double share = kL * (p[0] * (a * a / 2.0 - a * a * a / 3.0) + p[1] * a * a * a / 3.0);
+  TEST_FLOATING_EQUALITY(S[0], 0.2 * share, 1e-13);
+  // Nothing in contact anywhere: nothing at all.
+  const auto away = middle(-0.01, -0.01, -0.02, p);
+  double Z[2] = {0.0, 0.0};
+  wall.addNodeResidual(1, away.data(), Z);
+  TEST_EQUALITY_CONST(Z[0], 0.0);
+  TEST_EQUALITY_CONST(Z[1], 0.0);
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, ComplementarityFrictionIsContinuousAsTheLimitReachesANode) {
+  ContactWall wall = makeWall("Coulomb", 0.2);
+  wall.enterComplementarity();
+  const double p[3] = {1.0, 2.0, 4.0};
+  auto friction = [&](double g2) {
+    const auto v = middle(0.01, 0.01, g2, p);
+    double R[2] = {0.0, 0.0};
+    wall.addNodeResidual(1, v.data(), R);
+    return R[0];
+  };
+  // Node 2 from separating to pressing: the friction at node 1 goes to the full segment's value
+  // continuously (a change of 1e-12 in u·n changes it by O(1e-12 / φ_1), not by a segment's worth).
+  const double full = 0.2 * (kL * (2.0 / 3 + 1.0 / 6) + kL * (2.0 / 3 + 4.0 / 6));
+  TEST_FLOATING_EQUALITY(friction(1e-12), full, 1e-14);
+  TEST_FLOATING_EQUALITY(friction(-1e-12), full, 1e-10);
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, ComplementarityTangentMatchesFiniteDifferences) {
+  using Fad = Sacado::Fad::SFad<double, ContactWall::kNodeStencilSize>;
+  constexpr int N = ContactWall::kNodeStencilSize;
+  const double p[3] = {1.0, 2.0, 4.0};
+  for (const char* law : {"Coulomb", "Tresca", "Norton"}) {
+    out << law << "\n";
+    ContactWall wall = makeWall(law, 0.2, 0.5);
+    wall.enterComplementarity();
+    // Node 1 presses, node 2 separates (the limit inside segment 1–2), in slip.
+    const auto v0 = middle(0.01, 0.012, -0.02, p);
+    Fad v[N], R[2] = {0.0, 0.0};
+    for (int i = 0; i < N; ++i) v[i] = Fad(N, i, v0[i]);
+    wall.addNodeResidual(1, v, R);
+    const double delta = 1e-8;  // central FD: truncation O(δ²) inside the branch, round-off ~1e-16/δ
+    for (int j = 0; j < N; ++j) {
+      auto vp = v0, vm = v0;
+      vp[j] += delta;
+      vm[j] -= delta;
+      double Rp[2] = {0, 0}, Rm[2] = {0, 0};
+      wall.addNodeResidual(1, vp.data(), Rp);
+      wall.addNodeResidual(1, vm.data(), Rm);
+      for (int c = 0; c < 2; ++c) TEST_FLOATING_EQUALITY(R[c].dx(j) + 1.0, (Rp[c] - Rm[c]) / (2 * delta) + 1.0, 1e-6);
+    }
+  }
+}
+
 }  // namespace

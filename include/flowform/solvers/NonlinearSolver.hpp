@@ -85,8 +85,9 @@ class NonlinearSolver {
   /// constraints). On return x is the last converged state (the target's if converged).
   /// The model's physics is left at the target.
   /// `minimumStep` > 0 replaces Continuation/Minimum Step for this solve (a first try that
-  /// gives up sooner).
-  SolveReport solve(Vector& x, const FlowPhysics& target, double minimumStep = 0.0);
+  /// gives up sooner). `finalLooseTolerance` > 0: the last stage stops at ||F|| ≤ that ×
+  /// ||F_0|| (NewtonOptions::looseTolerance; for a state that another Newton continues).
+  SolveReport solve(Vector& x, const FlowPhysics& target, double minimumStep = 0.0, double finalLooseTolerance = 0.0);
 
   /// Solves again after a small change (a contact status change): Newton at the target
   /// from x; if that fails, the full solve() (predictor and continuation). `options`: a
