@@ -286,6 +286,10 @@ void ContactWall::takeStatusesFrom(const ContactWall& other, const std::vector<s
       m_active[k] = active || held(k) ? kActive : kFree;
   }
   resetChangeCounts();
+  // A solve from here: the same model as the state it starts from. Without u (the adaptive
+  // indicators' linearization at the carried state) the statuses stay as carried: measured, the
+  // indicators of the complementarity walls coarsened the extrusion's mesh cycle after cycle.
+  if (other.m_complementarity && u) enterComplementarity();
 }
 
 int ContactWall::enterComplementarity() {

@@ -79,13 +79,22 @@ flowform_budget_test(budget_zero_response_penalty_1e-300 CASE ${FLOWFORM_BUDGET_
   WRITTEN summary.json)
 
 # --- ordinary physics that does not converge says what and what to try ----------------------------
-# n = 1 on the coarse extrusion: seven die-land nodes cycle between active and free.
+# n = 1 on the coarse extrusion with the paper's status loop: seven die-land nodes cycle between
+# active and free (the default, complementarity, converges there: test contact_cycling_cases).
 flowform_budget_test(contact_cycling_message CASE ${FLOWFORM_BUDGET_EXTRUSION}
   SET "Adaptivity/Enabled=false" "Mesh/Geo Parameters/h=0.2" "Material/Rate Exponent=1"
+      "Contact/Status Update=Certain Iterate"
   CONTAINS "flowform: not converged: the contact status does not settle"
   MESSAGE "7 node(s) cycle between active and free" "on wall 'die_land' at x 0.214..0.643, y = 0.5"
           "Boundary Conditions/die_land/Released Nodes=Never" "Contact/Max Changes Per Node"
   WRITTEN summary.json)
+# The cases where the paper's loop cycles converge with the default, complementarity (no node has
+# a status to cycle; docs/contact.md): n = 1, a larger cutoff, no yield stress on the coarse mesh.
+foreach(variant "Material/Rate Exponent=1" "Material/Strain Rate Cutoff=1e-2" "Material/Yield Stress=0")
+  string(REGEX REPLACE "[^A-Za-z0-9]+" "_" tag "${variant}")
+  flowform_exit_test(contact_cycling_converges_${tag} CASE ${FLOWFORM_BUDGET_EXTRUSION} STATUS 0 CONVERGED
+    SET "Adaptivity/Enabled=false" "Mesh/Geo Parameters/h=0.2" "${variant}")
+endforeach()
 
 # --- a user .msh with an adaptive case: exit 2, the reason and the ways forward ------------------
 flowform_exit_test(bad_input_adaptive_msh CASE ${FLOWFORM_BUDGET_EXTRUSION}

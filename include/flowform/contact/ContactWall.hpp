@@ -184,7 +184,8 @@ class ContactWall {
   /// ends differ — the limit of the contact zone — is decided by the activation criterion
   /// instead: active if it moves into the tool (u·n > penetrationTolerance, for every normal at a
   /// convex tool corner). The change counts start again from zero. For starting a solve on a
-  /// new mesh from a converged one.
+  /// new mesh from a converged one. When `other` decides by complementarity and `u` is given (a
+  /// solve starts here), so does this wall (each node starting with the contact taken over).
   void takeStatusesFrom(const ContactWall& other, const std::vector<std::array<double, 2>>* u = nullptr,
                         double penetrationTolerance = 0.0);
   /// Per wall node: viscosity μ and flow stress σ̄ (largest over the adjacent cells).

@@ -18,7 +18,8 @@ def cmd_frictionless(runner, args, checks):
         specs += [(f"h = {h}, Coulomb nu = 0", dict(name=f"fl_coulomb_h{h}", h=h, nu=0.0)),
                   (f"h = {h}, Friction Law None", dict(name=f"fl_none_h{h}", h=h, nu=0.0, sets=none)),
                   (f"h = {h}, nu = 0, no release (Pressure Tol 1e9)",
-                   dict(name=f"fl_norelease_h{h}", h=h, nu=0.0, sets=["Contact/Pressure Tolerance=1e9"])),
+                   dict(name=f"fl_norelease_h{h}", h=h, nu=0.0, sets=["Contact/Pressure Tolerance=1e9",
+                                                                                "Contact/Status Update=Certain Iterate"])),
                   (f"h = {h}, Symmetry walls", dict(name=f"fl_symmetry_h{h}", h=h, case=symmetry_case))]
     runs = runner.run_all(specs, checks)
     gaps, table = [], []
