@@ -34,13 +34,32 @@ import sys
 
 import numpy as np
 
-from flowform_tools import default_flowform, launcher, repo_path, tables
+from flowform_tools import csvio, default_flowform, launcher, repo_path, tables
 from flowform_tools.case import FIXED_MESH, Case
 from flowform_tools.machine import binary_built, load, machine_info
 
 STRATEGIES = ("Complementarity", "Certain Iterate")
 SHORT = {"Complementarity": "C", "Certain Iterate": "CI"}
 SENSITIVITY = ["Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true"]
+
+
+def run_dir(out, series, value, strategy):
+    return os.path.join(out, (f"mesh_hc{value:.5f}" if series == "mesh" else f"nu{value:.4f}") + "_" + SHORT[strategy])
+
+
+def lip_un(outdir, walls):
+    """u·n on the die face of the die-lip node, the end shared by the last two walls in flow order
+    (≈ 0: the face holds the lip; about the exit speed: the lip slides along the land, the open
+    corner); None when the CSVs are absent."""
+    try:
+        shared = csvio.shared_points(outdir, walls[-2], walls[-1])
+        rows = csvio.rows(outdir, walls[-2])
+    except (OSError, IndexError):
+        return None
+    for r in rows:
+        if (round(r["x"], 9), round(r["y"], 9)) in shared:
+            return r["u_n"]
+    return None
 
 
 def run_one(flowform, case, outdir, sets, strategy, timeout):
@@ -56,7 +75,8 @@ def run_one(flowform, case, outdir, sets, strategy, timeout):
             "F": (s.get("functionals") or {}).get(force),
             "ddm": ((s.get("sensitivities") or {}).get(force) or {}).get("Friction Coefficient"),
             "fd": check.get("fd"), "fd_forward": check.get("fd_forward"), "fd_backward": check.get("fd_backward"),
-            "fd_status": check.get("status"), "fd_rel_diff": check.get("rel_diff")}
+            "fd_status": check.get("status"), "fd_rel_diff": check.get("rel_diff"),
+            "lip_un": lip_un(outdir, Case(case).contact_walls())}
 
 
 def fit(x, y, degree):
@@ -78,23 +98,25 @@ def mesh_tables(series, out):
         rows.append([g(pt["hc"], ".4g"), g(c["dofs"], "d"), g(c["F"]), g(ci["F"]),
                      g(c["F"] - ci["F"] if c["F"] is not None and ci["F"] is not None else None, ".2e"),
                      f"{g(c['newton'], 'd')} / {g(ci['newton'], 'd')}", f"{g(c['changes'], 'd')} / {g(ci['changes'], 'd')}",
-                     f"{c['wall']:.1f} / {ci['wall']:.1f}", f"{c['status']} / {ci['status']}"])
+                     f"{c['wall']:.1f} / {ci['wall']:.1f}", f"{c['status']} / {ci['status']}",
+                     f"{g(c.get('lip_un'), '.3g')} / {g(ci.get('lip_un'), '.3g')}"])
     print(f"\n### Ram force against hc (h = {series['h']}, ν = {series['nu']})\n", file=out)
     print(tables.markdown(["hc", "dofs", "F (C)", "F (CI)", "C − CI", "Newton C / CI", "changes C / CI",
-                           "wall s C / CI", "exit C / CI"], rows), file=out)
+                           "wall s C / CI", "exit C / CI", "lip u_n C / CI"], rows), file=out)
     rows = []
-    for strategy in STRATEGIES:
-        f = series["fits"].get(strategy)
-        if not f:
-            continue
-        (l0, l1), lr = f["linear"]
-        (q0, q1, q2), qr = f["quadratic"]
-        rows.append([SHORT[strategy], g(l0), g(l1, ".4g"), g(lr, ".2e"), g(lr / abs(l0), ".1e"),
-                     g(q0), g(q1, ".4g"), g(q2, ".4g"), g(qr, ".2e"), g(qr / abs(q0), ".1e"),
-                     g(f["max_abs_dev_quadratic"], ".2e")])
+    for key, what in (("fits", "all meshes"), ("fits_lip_open", f"meshes where both let the lip slide (lip u_n > {LIP_SLIDES})")):
+        for strategy in STRATEGIES:
+            f = (series.get(key) or {}).get(strategy)
+            if not f:
+                continue
+            (l0, l1), lr = f["linear"]
+            (q0, q1, q2), qr = f["quadratic"]
+            rows.append([what, SHORT[strategy], str(f.get("points", "")), g(l0), g(l1, ".4g"), g(lr, ".2e"),
+                         g(lr / abs(l0), ".1e"), g(q0), g(q1, ".4g"), g(q2, ".4g"), g(qr, ".2e"), g(qr / abs(q0), ".1e"),
+                         g(f["max_abs_dev_quadratic"], ".2e")])
     print("\nFits F = F0 + a hc (+ b hc²); RMS = the scatter about the fit\n", file=out)
-    print(tables.markdown(["strategy", "F0 (lin.)", "a", "RMS", "RMS/F0", "F0 (quad.)", "a", "b", "RMS", "RMS/F0",
-                           "max abs dev. (quad.)"], rows), file=out)
+    print(tables.markdown(["meshes", "strategy", "n", "F0 (lin.)", "a", "RMS", "RMS/F0", "F0 (quad.)", "a", "b", "RMS",
+                           "RMS/F0", "max abs dev. (quad.)"], rows), file=out)
 
 
 def nu_tables(series, out):
@@ -114,10 +136,10 @@ def nu_tables(series, out):
             rows.append([g(pt["nu"], ".4g"), g(r["F"]), g(r["ddm"], ".5g"), g(r["fd"], ".5g"),
                          g(r["fd_rel_diff"], ".1e"), str(r["fd_status"]), g(central, ".5g"),
                          g(rel(central, r["ddm"]), ".1e"), g(d2, ".2e"), g(r["newton"], "d"), g(r["changes"], "d"),
-                         str(r["status"])])
+                         str(r["status"]), g(r.get("lip_un"), ".3g")])
         print(f"\n{strategy}:\n", file=out)
         print(tables.markdown(["ν", "F", "dF/dν DDM", "FD (check, ±2e-4)", "DDM–FD rel.", "check", "sweep central diff.",
-                               "vs DDM rel.", "Δ²F", "Newton", "changes", "exit"], rows), file=out)
+                               "vs DDM rel.", "Δ²F", "Newton", "changes", "exit", "lip u_n"], rows), file=out)
     rows = []
     for strategy in STRATEGIES:
         s = series["summary"].get(strategy)
@@ -142,17 +164,27 @@ def print_tables(data, out=sys.stdout):
         nu_tables(data["nu"], out)
 
 
+#: lip u·n above this: the die-lip node slides along the land (the open corner, u·n ≈ the exit speed)
+LIP_SLIDES = 0.5
+
+
 def summarize_mesh(series):
-    series["fits"] = {}
-    for strategy in STRATEGIES:
-        pts = [(pt["hc"], pt["runs"][strategy]["F"]) for pt in series["points"] if pt["runs"][strategy]["F"] is not None
-               and pt["runs"][strategy]["status"] == 0]
-        if len(pts) < 4:
-            continue
-        x, y = zip(*pts)
-        lin, quad = fit(x, y, 1), fit(x, y, 2)
-        dev = np.asarray(y) - np.vander(np.asarray(x), 3, increasing=True) @ np.asarray(quad[0])
-        series["fits"][strategy] = {"linear": lin, "quadratic": quad, "max_abs_dev_quadratic": float(np.max(np.abs(dev)))}
+    """Fits over every mesh ("fits") and over the meshes where both strategies let the die-lip
+    node slide ("fits_lip_open": the same corner model, so that only the walls' contact zones
+    differ)."""
+    for key, keep in (("fits", lambda pt: True),
+                      ("fits_lip_open", lambda pt: all((r.get("lip_un") or 0.0) > LIP_SLIDES for r in pt["runs"].values()))):
+        series[key] = {}
+        for strategy in STRATEGIES:
+            pts = [(pt["hc"], pt["runs"][strategy]["F"]) for pt in series["points"] if keep(pt)
+                   and pt["runs"][strategy]["F"] is not None and pt["runs"][strategy]["status"] == 0]
+            if len(pts) < 4:
+                continue
+            x, y = zip(*pts)
+            lin, quad = fit(x, y, 1), fit(x, y, 2)
+            dev = np.asarray(y) - np.vander(np.asarray(x), 3, increasing=True) @ np.asarray(quad[0])
+            series[key][strategy] = {"linear": lin, "quadratic": quad, "points": len(pts),
+                                     "max_abs_dev_quadratic": float(np.max(np.abs(dev)))}
 
 
 def summarize_nu(series):
@@ -194,7 +226,17 @@ def main():
     a = ap.parse_args()
     if a.report:
         with open(a.report) as f:
-            print_tables(json.load(f))
+            data = json.load(f)
+        walls = Case(repo_path(data["case"])).contact_walls()
+        for series, key in (("mesh", "hc"), ("nu", "nu")):
+            for pt in (data.get(series) or {}).get("points", []):
+                for strategy, r in pt["runs"].items():
+                    if r.get("lip_un") is None:
+                        r["lip_un"] = lip_un(run_dir(os.path.dirname(os.path.abspath(a.report)), series, pt[key], strategy),
+                                             walls)
+        if "mesh" in data:
+            summarize_mesh(data["mesh"])
+        print_tables(data)
         return 0
     flowform = launcher.require_executable(a.flowform, "contact_smoothness.py")
     case = os.path.abspath(a.case)
@@ -218,8 +260,7 @@ def main():
             sets = [f"Mesh/Geo Parameters/h={launcher.lit(a.h)}", f"Mesh/Geo Parameters/hc={launcher.lit(hc)}"] + friction(a.nu)
             pt = {"hc": hc, "runs": {}}
             for strategy in STRATEGIES:
-                r = run_one(flowform, case, os.path.join(a.out, f"mesh_hc{hc:.5f}_{SHORT[strategy]}"), sets, strategy,
-                            a.timeout)
+                r = run_one(flowform, case, run_dir(a.out, "mesh", hc, strategy), sets, strategy, a.timeout)
                 pt["runs"][strategy] = r
                 ok = ok and r["status"] == 0
                 print(f"hc={hc:.5f} {SHORT[strategy]:3} exit {r['status']} {r['wall']:6.1f} s F {r['F']} "
@@ -236,8 +277,7 @@ def main():
                 friction(nu) + SENSITIVITY
             pt = {"nu": nu, "runs": {}}
             for strategy in STRATEGIES:
-                r = run_one(flowform, case, os.path.join(a.out, f"nu{nu:.4f}_{SHORT[strategy]}"), sets, strategy,
-                            a.timeout)
+                r = run_one(flowform, case, run_dir(a.out, "nu", nu, strategy), sets, strategy, a.timeout)
                 pt["runs"][strategy] = r
                 ok = ok and r["status"] == 0
                 print(f"nu={nu:.4f} {SHORT[strategy]:3} exit {r['status']} {r['wall']:6.1f} s F {r['F']} "

@@ -6,8 +6,9 @@ and prints per scene the responses of both, their difference, their error estima
 (summary.json functionals_error_estimate, where the run estimates) and whether
 |F_C − F_CI| ≤ |η_C| + |η_CI| (the strategies agree within the estimated discretization error);
 the Newton iterations (all adaptive cycles added up), contact changes, flow solves, wall
-seconds, exit status and whether the complementarity run fell back to the status loop (its
-warning in the log); and where the final contact statuses differ (boundary_<wall>.csv
+seconds, exit status, whether the complementarity run fell back to the status loop (its
+warning in the log) and u·n on the die face of the die-lip node (≈ 0: the face holds the lip;
+about the exit speed: the lip slides along the land, the open corner); and where the final contact statuses differ (boundary_<wall>.csv
 contact_status of both runs, each node's status held up to the midpoints to its neighbours,
 compared along the wall's coordinate).
 
@@ -135,6 +136,21 @@ def run_one(flowform, path, outdir, sets, strategy, timeout):
 # Comparisons
 
 
+def lip_un(statuses):
+    """u·n on the die face of the die-lip node (the end shared by the last two walls in flow
+    order, as bench/extrusion_bench.py reads it): ≈ 0 when the face holds the lip, about the exit
+    speed when the lip node is free on the face (the open corner's leak); None without both walls."""
+    walls = [w for w in statuses]
+    if len(walls) < 2:
+        return None
+    a, b = statuses[walls[-2]], statuses[walls[-1]]
+    ends_b = {(round(x, 9), round(y, 9)) for x, y in zip(b["x"], b["y"])}
+    for x, y, un in zip(a["x"], a["y"], a["u_n"]):
+        if (round(x, 9), round(y, 9)) in ends_b:
+            return un
+    return None
+
+
 def coordinate(nodes):
     """The coordinate that varies along a wall: 'x' or 'y'."""
     span = lambda k: max(nodes[k]) - min(nodes[k])  # noqa: E731
@@ -249,9 +265,10 @@ def print_tables(data, out=sys.stdout):
                 continue
             rows.append([p["label"], SHORT[strategy], str(r["status"]), g(r["dofs"], "d"), str(r["cycles"]),
                          g(r["newton"], "d"), g(r["contact_changes"], "d"), f"{r['wall']:.1f}",
-                         f"{r['load'][0]:.1f}/{r['load'][1]:.1f}", "yes" if r["fallback"] else ""])
+                         f"{r['load'][0]:.1f}/{r['load'][1]:.1f}", "yes" if r["fallback"] else "",
+                         g(lip_un(r["statuses"]), ".3g")])
     print(tables.markdown(["scene", "strategy", "exit", "dofs", "cycles", "Newton", "changes", "wall s", "load",
-                           "fallback"], rows), file=out)
+                           "fallback", "lip u_n (face)"], rows), file=out)
     print("\n### Responses\n", file=out)
     rows = []
     for p in pairs:
