@@ -31,7 +31,8 @@ usage:
   scripts/python bench/contact_strategies.py [FLOWFORM] [--nus 0,0.05,0.1,0.2,0.3,0.5]
         [--scenes plane-fixed,axisym-fixed,...] [--skip-cutting] [--out DIR] [--json OUT.json]
         [--timeout S]
-  scripts/python bench/contact_strategies.py --report OUT.json [--markdown]
+        [--only LABEL-TEXT]
+  scripts/python bench/contact_strategies.py --report OUT.json [MORE.json ...]
 
 Runs are kept in --out (default /tmp/contact_strategies), <scene>_nu<ν>_<strategy>/ with
 flowform.log; everything in OUT/contact_strategies.json (rewritten after each pair). Needs
@@ -295,14 +296,17 @@ def main():
     ap.add_argument("--out", default="/tmp/contact_strategies")
     ap.add_argument("--json")
     ap.add_argument("--timeout", type=float, default=1800)
-    ap.add_argument("--report", nargs="+", help="print the tables of earlier JSON files (merged), run nothing")
+    ap.add_argument("--only", help="run only the pairs whose label contains this text (e.g. 'ν=1')")
+    ap.add_argument("--report", nargs="+", help="print the tables of earlier JSON files (merged; a later file's "
+                    "pair replaces one of the same label), run nothing")
     a = ap.parse_args()
     if a.report:
         data = {"pairs": []}
         for path in a.report:
             with open(path) as f:
                 d = json.load(f)
-            data["pairs"] += d["pairs"]
+            for p in d["pairs"]:  # a later file's pair replaces an earlier one of the same label
+                data["pairs"] = [q for q in data["pairs"] if q["label"] != p["label"]] + [p]
             data.setdefault("machine", d.get("machine"))
             data.setdefault("binary_built", d.get("binary_built"))
         print_tables(data)
@@ -320,6 +324,8 @@ def main():
     data = {"machine": machine_info(), "binary_built": binary_built(flowform), "flowform": flowform, "pairs": []}
     ok = True
     for scene, label, path, sets in scene_runs(scenes, nus):
+        if a.only and a.only not in label:
+            continue
         pair = {"scene": scene, "label": label, "case": os.path.relpath(path, repo_path()), "sets": sets, "runs": {}}
         for strategy in STRATEGIES:
             outdir = os.path.join(a.out, label.replace(" ", "_").replace("ν=", "nu") + "_" + SHORT[strategy])
