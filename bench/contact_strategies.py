@@ -31,7 +31,7 @@ usage:
   scripts/python bench/contact_strategies.py [FLOWFORM] [--nus 0,0.05,0.1,0.2,0.3,0.5]
         [--scenes plane-fixed,axisym-fixed,...] [--skip-cutting] [--out DIR] [--json OUT.json]
         [--timeout S]
-        [--only LABEL-TEXT]
+        [--only LABEL-TEXT] [--strategies Complementarity]
   scripts/python bench/contact_strategies.py --report OUT.json [MORE.json ...]
 
 Runs are kept in --out (default /tmp/contact_strategies), <scene>_nu<ν>_<strategy>/ with
@@ -296,6 +296,8 @@ def main():
     ap.add_argument("--out", default="/tmp/contact_strategies")
     ap.add_argument("--json")
     ap.add_argument("--timeout", type=float, default=1800)
+    ap.add_argument("--strategies", default=",".join(STRATEGIES),
+                    help="run only these (a rerun of one run; --report merges it into the pair)")
     ap.add_argument("--only", help="run only the pairs whose label contains this text (e.g. 'ν=1')")
     ap.add_argument("--report", nargs="+", help="print the tables of earlier JSON files (merged; a later file's "
                     "pair replaces one of the same label), run nothing")
@@ -305,10 +307,15 @@ def main():
         for path in a.report:
             with open(path) as f:
                 d = json.load(f)
-            for p in d["pairs"]:  # a later file's pair replaces an earlier one of the same label
-                data["pairs"] = [q for q in data["pairs"] if q["label"] != p["label"]] + [p]
+            for p in d["pairs"]:  # a later file's run replaces an earlier one of the same label and strategy
+                same = [q for q in data["pairs"] if q["label"] == p["label"]]
+                if same:
+                    same[0]["runs"].update(p["runs"])
+                else:
+                    data["pairs"].append(p)
             data.setdefault("machine", d.get("machine"))
             data.setdefault("binary_built", d.get("binary_built"))
+        data["pairs"] = [compare(p) if len(p["runs"]) == len(STRATEGIES) else p for p in data["pairs"]]
         print_tables(data)
         return 0
     flowform = launcher.require_executable(a.flowform, "contact_strategies.py")
@@ -327,14 +334,14 @@ def main():
         if a.only and a.only not in label:
             continue
         pair = {"scene": scene, "label": label, "case": os.path.relpath(path, repo_path()), "sets": sets, "runs": {}}
-        for strategy in STRATEGIES:
+        for strategy in [t for t in STRATEGIES if t in a.strategies.split(",")]:
             outdir = os.path.join(a.out, label.replace(" ", "_").replace("ν=", "nu") + "_" + SHORT[strategy])
             r = run_one(flowform, path, outdir, sets, strategy, a.timeout)
             pair["runs"][strategy] = r
             ok = ok and r["status"] == 0
             print(f"{label:24} {SHORT[strategy]:3} exit {r['status']} {r['wall']:7.1f} s Newton {r['newton']} "
                   f"changes {r['contact_changes']} F {r['functionals']}", flush=True)
-        data["pairs"].append(compare(pair))
+        data["pairs"].append(compare(pair) if len(pair["runs"]) == len(STRATEGIES) else pair)
         with open(json_path + ".tmp", "w") as f:
             json.dump(data, f, indent=1)
         os.replace(json_path + ".tmp", json_path)
