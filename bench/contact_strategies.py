@@ -202,6 +202,16 @@ def status_differences(a, b):
     return out
 
 
+def values_in(nodes, c, lo, hi, key):
+    """(min, max) of column key over the nodes whose held interval meets [lo, hi]; None if none."""
+    xs = sorted(nodes[c])
+    v = [val for x, val in sorted(zip(nodes[c], nodes[key]))]
+    mids = [0.5 * (a + b) for a, b in zip(xs, xs[1:])]
+    own = [(([xs[0]] + mids)[i], (mids + [xs[-1]])[i]) for i in range(len(xs))]
+    picked = [v[i] for i, (a, b) in enumerate(own) if b > lo + 1e-12 and a < hi - 1e-12]
+    return (min(picked), max(picked)) if picked else None
+
+
 def contact_zones(nodes):
     """The ranges (along the wall's coordinate) of consecutive active nodes, as 'lo–hi'."""
     c = coordinate(nodes)
@@ -285,6 +295,20 @@ def print_tables(data, out=sys.stdout):
         if "status_differences" in p:
             rows.append([p["label"], ranges_text(p["status_differences"])])
     print(tables.markdown(["scene", "ranges (wall, coordinate, status C/CI; 1 active, 0 free)"], rows), file=out)
+    print("\n### p and u·n at the nodes whose statuses differ (min … max over each range)\n", file=out)
+    rows = []
+    span = lambda r: "-" if r is None else f"{r[0]:.3g} … {r[1]:.3g}"  # noqa: E731
+    for p in pairs:
+        runs = p["runs"]
+        for w, d in (p.get("status_differences") or {}).items():
+            for lo, hi, sa, sb in d["ranges"]:
+                cells = []
+                for strategy in STRATEGIES:
+                    nodes = runs[strategy]["statuses"][w]
+                    cells += [span(values_in(nodes, d["coordinate"], lo, hi, "p")),
+                              span(values_in(nodes, d["coordinate"], lo, hi, "u_n"))]
+                rows.append([p["label"], f"{w} {d['coordinate']} {lo:.4g}–{hi:.4g}", f"{int(sa)} / {int(sb)}"] + cells)
+    print(tables.markdown(["scene", "range", "status C / CI", "p (C)", "u·n (C)", "p (CI)", "u·n (CI)"], rows), file=out)
 
 
 def main():
