@@ -15,7 +15,7 @@ case's fixed mesh family (Adaptivity/Enabled=false):
          the check's FD and their relative difference, the central difference of the sweep itself
          (F(ν+Δ) − F(ν−Δ)) / 2Δ against the DDM, the second differences
          Δ²F = F(ν+Δ) − 2F(ν) + F(ν−Δ) (a smooth F has Δ²F ≈ F''Δ², nearly constant), and the RMS
-         residual of a quadratic fit of F(ν).
+         residual of a quadratic and a cubic fit of F(ν).
 
 usage:
   scripts/python bench/contact_smoothness.py [FLOWFORM] [--case xml/extrusion.xml] [--series mesh,nu]
@@ -145,11 +145,11 @@ def nu_tables(series, out):
         s = series["summary"].get(strategy)
         if not s:
             continue
-        rows.append([SHORT[strategy], g(s["quadratic_rms"], ".2e"), g(s["d2_mean"], ".2e"), g(s["d2_std"], ".2e"),
+        rows.append([SHORT[strategy], g(s["quadratic_rms"], ".2e"), g(s.get("cubic_rms"), ".2e"), g(s["d2_mean"], ".2e"), g(s["d2_std"], ".2e"),
                      g(s["d2_max_abs"], ".2e"), g(s["ddm_fd_max_rel"], ".1e"), g(s["ddm_central_max_rel"], ".1e")])
-    print("\nSmoothness of F(ν): RMS residual of a quadratic fit; second differences (a smooth F has them nearly"
+    print("\nSmoothness of F(ν): RMS residual of a quadratic and a cubic fit; second differences (a smooth F has them nearly"
           " constant); the largest DDM–FD and DDM–sweep differences\n", file=out)
-    print(tables.markdown(["strategy", "quad. fit RMS", "Δ²F mean", "Δ²F std", "max abs Δ²F", "max DDM–FD rel.",
+    print(tables.markdown(["strategy", "quad. fit RMS", "cubic fit RMS", "Δ²F mean", "Δ²F std", "max abs Δ²F", "max DDM–FD rel.",
                            "max DDM–sweep rel."], rows), file=out)
 
 
@@ -200,7 +200,7 @@ def summarize_nu(series):
         ddm = [r["ddm"] for r in runs]
         fd_rel = [abs(r["ddm"] - r["fd"]) / abs(r["fd"]) for r in runs if r["ddm"] is not None and r["fd"]]
         series["summary"][strategy] = {
-            "quadratic_rms": fit(nus, F, 2)[1], "d2": d2, "d2_mean": float(np.mean(d2)), "d2_std": float(np.std(d2)),
+            "quadratic_rms": fit(nus, F, 2)[1], "cubic_rms": fit(nus, F, 3)[1], "d2": d2, "d2_mean": float(np.mean(d2)), "d2_std": float(np.std(d2)),
             "d2_max_abs": float(np.max(np.abs(d2))),
             "ddm_fd_max_rel": max(fd_rel) if fd_rel else None,
             "ddm_central_max_rel": max(abs(c - d) / abs(d) for c, d in zip(central, ddm[1:-1]) if d)}
@@ -236,6 +236,8 @@ def main():
                                              walls)
         if "mesh" in data:
             summarize_mesh(data["mesh"])
+        if "nu" in data:
+            summarize_nu(data["nu"])
         print_tables(data)
         return 0
     flowform = launcher.require_executable(a.flowform, "contact_smoothness.py")
