@@ -60,6 +60,9 @@ CYCLING = (("n=1", ["Mesh/Geo Parameters/h=0.2", "Material/Rate Exponent=1"]),
            ("σ0=0", ["Mesh/Geo Parameters/h=0.2", "Material/Yield Stress=0"]),
            ("ν=1", "nu=1"), ("ν=2", "nu=2"))
 EXTRUSION = {"plane": "xml/extrusion.xml", "axisym": "xml/extrusion_axisym.xml"}
+#: F_inf of the ram force (the open-lip model's mesh limit, docs/BENCHMARKS.md §10), per (case, ν).
+REFERENCES = {("plane", 0.0): 3.30663, ("plane", 0.1): 3.73469, ("plane", 0.3): 4.3595,
+              ("axisym", 0.0): 18.2239, ("axisym", 0.1): 23.1183, ("axisym", 0.3): 26.646}
 
 
 def friction_sets(case, nu):
@@ -289,6 +292,24 @@ def print_tables(data, out=sys.stdout):
                          g(v["rel"], ".2e"), g(v["eta_C"], ".2e"), g(v["eta_CI"], ".2e"), agree])
     print(tables.markdown(["scene", "response", "F (C)", "F (CI)", "F_C − F_CI", "rel.", "η_C", "η_CI",
                            "agree within η_C + η_CI"], rows), file=out)
+    rows = []
+    for p in pairs:
+        if not p["scene"].endswith(("-fixed", "-adaptive")):
+            continue
+        ref = REFERENCES.get((p["scene"].split("-")[0], float(p["label"].split("=")[1])))
+        if ref is None:
+            continue
+        cells = [p["label"], f"{ref:g}"]
+        for strategy in STRATEGIES:
+            r = p["runs"][strategy]
+            f, e = r["functionals"].get("ram_force"), r["estimates"].get("ram_force")
+            cells += [g(f, ".6g"), g((f - ref) / ref if f is not None else None, "+.1e"),
+                      g(abs(e) / abs(f) if e is not None and f else None, ".1e")]
+        rows.append(cells)
+    if rows:
+        print("\n### Ram force against the references of docs/BENCHMARKS.md §10 (F_inf)\n", file=out)
+        print(tables.markdown(["scene", "F_ref", "F (C)", "rel. error C", "abs. η_C / F", "F (CI)", "rel. error CI",
+                               "abs. η_CI / F"], rows), file=out)
     print("\n### Where the final statuses differ\n", file=out)
     rows = []
     for p in pairs:
