@@ -35,6 +35,15 @@ const SolveReport& Problem::solve() {
   const double loose = m_statusLoop->complementarity() && !m_walls.empty() ? kLooseFirstSolve : 0.0;
   m_report = m_warmStart ? solver.resolve(*m_solution, m_physics)
                          : solver.solve(*m_solution, m_physics, firstMinimum, loose);
+  // The complementarity Newton continues a converged first solve. Should it fail, and the status
+  // loop's tight re-solve too (a loose first state that was no good start), the first solve
+  // counts as failed and the next start below is tried.
+  auto complement = [&] {
+    if (!m_report.converged || m_walls.empty() || !m_statusLoop->complementarity()) return;
+    m_report.newtonPerSolve = {m_report.newtonIterations};
+    enterComplementarity(solver);
+  };
+  complement();
   auto again = [&](bool stick, const char* how) {
     log() << "flowform: the first solve failed (" << m_report.message << "); solving again " << how << "\n";
     Tpetra::deep_copy(*m_solution, initial);
@@ -45,13 +54,13 @@ const SolveReport& Problem::solve() {
     next.newtonIterations += m_report.newtonIterations;
     next.restarts = m_report.restarts + 1;
     m_report = next;
+    complement();
   };
   if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) again(true, "from walls that stick at rest");
   if (!m_report.converged && !m_walls.empty() && firstMinimum > caseMinimum && !budgetWasSpent())
     again(false, "from frictionless walls with every continuation halving");
-  m_report.newtonPerSolve = {m_report.newtonIterations};
+  if (m_report.newtonPerSolve.empty()) m_report.newtonPerSolve = {m_report.newtonIterations};
   if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) m_report.message += firstSolveHints();
-  if (m_report.converged && !m_walls.empty() && m_statusLoop->complementarity()) enterComplementarity(solver);
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
   if (m_report.converged && !m_freeSurfaces->empty()) {
@@ -82,7 +91,9 @@ void Problem::enterComplementarity(NonlinearSolver& solver) {
   for (ContactWall& wall : m_walls) nodes += wall.enterComplementarity();
   if (nodes == 0 && corners == 0 && m_warmStart) return;  // the warm re-solve was tight
   const Vector converged(*m_solution, Teuchos::Copy);
-  const SolveReport r = solver.resolve(*m_solution, m_physics);
+  NewtonOptions options;
+  options.restart = false;  // its fallback is the status loop below, not the predictor
+  const SolveReport r = solver.resolve(*m_solution, m_physics, options);
   m_report.newtonIterations += r.newtonIterations;
   m_report.newtonPerSolve.push_back(r.newtonIterations);
   m_report.restarts += r.restarts;

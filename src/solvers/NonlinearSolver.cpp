@@ -224,6 +224,11 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
       return report;
     }
   }
+  if (!options.restart) {
+    Tpetra::deep_copy(x, start);
+    report.message = "Newton did not converge from the start it was given";
+    return report;
+  }
   log() << "  re-solve failed; starting again from the Newtonian predictor\n";
   Tpetra::deep_copy(x, start);
   SolveReport full = solve(x, target);

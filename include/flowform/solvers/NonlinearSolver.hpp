@@ -49,6 +49,9 @@ struct NewtonOptions {
   bool continuing = false;
   /// > 0: the ||F_0|| of the solve this one continues (the relative tolerance's scale).
   double referenceResidual = 0.0;
+  /// resolve(): false: a Newton that fails is reported as failed, with no restart from the
+  /// predictor (the caller has a better fallback).
+  bool restart = true;
 };
 
 struct SolveReport {
