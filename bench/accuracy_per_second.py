@@ -53,7 +53,7 @@ from flowform_tools.case import FIXED_MESH, Case
 from flowform_tools.launcher import lit
 from flowform_tools.machine import binary_built, load, machine_info
 from flowform_tools.numerics import median
-from flowform_tools.tables import markdown
+from flowform_tools.tables import fmt, markdown
 
 CASES = {"plane": "xml/extrusion.xml", "axisym": "xml/extrusion_axisym.xml"}
 #: (case, ν): (F_inf, ±), docs/BENCHMARKS.md §10
@@ -68,14 +68,6 @@ ESTIMATE_SHARE_TARGET = 0.30
 CUTTING_SECONDS_TARGET = 15.0
 # (true relative error, seconds) the adaptive loop must reach asking for exactly that target
 SPEED_TARGETS = [(5e-4, 3.0), (1e-4, 20.0)]
-
-
-def fmt(v, form="{:.3g}"):
-    if v is None:
-        return "-"
-    if isinstance(v, str):
-        return v
-    return form.format(v)
 
 
 def parse_mesh(text):

@@ -4,15 +4,7 @@ Imported by extrusion_bench.py, which has put python/ on the path."""
 import math
 import sys
 
-from flowform_tools.tables import markdown
-
-
-def fmt(v, form="{:.3g}"):
-    if v is None:
-        return "-"
-    if isinstance(v, str):
-        return v
-    return form.format(v)
+from flowform_tools.tables import fmt, markdown
 
 
 def count_table(rows):

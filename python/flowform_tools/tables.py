@@ -8,3 +8,12 @@ def markdown(header, rows, align="---"):
     for r in rows:
         out += "| " + " | ".join(r) + " |\n"
     return out
+
+
+def fmt(v, form="{:.3g}"):
+    """A table cell: "-" for None, a string as it is, a number by `form`."""
+    if v is None:
+        return "-"
+    if isinstance(v, str):
+        return v
+    return form.format(v)
