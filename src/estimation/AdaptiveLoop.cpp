@@ -90,9 +90,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
   const double tolerance = adaptivity.get<double>("Target Relative Error");
   // The estimate's effectivity (estimate / true error) is measured in [0.7, 1.1] on the extrusion
   // (docs/theory.md §7): the loop stops when Safety Factor × the estimate meets the target, so
-  // that the true error does too. The next mesh is sized for the target itself: sized for
-  // target/Safety Factor, the plane extrusion's lip was refined past what gmsh may mesh
-  // (Mesh/Maximum Cells) at targets ≤ 0.1 %, and the shipped case took one cycle more.
+  // that the true error does too, and sizes the next mesh for that.
   const double safety = adaptivity.get<double>("Safety Factor");
   const int maxCycles = adaptivity.get<int>("Maximum Cycles");
   const double maxDofs = adaptivity.get<int>("Maximum Dofs");
@@ -193,7 +191,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
       break;
     }
     // On the mesh as made: a free-surface update moved boundary nodes off the .geo's curves.
-    field = sizeFieldOnMesh(sim->problem().meshAsMade(), nextSizes(*sim, targets, tolerance, minSize, maxSize, maxDofs));
+    field = sizeFieldOnMesh(sim->problem().meshAsMade(), nextSizes(*sim, targets, tolerance / safety, minSize, maxSize, maxDofs));
     previous = std::move(sim);
   }
   nlohmann::json block = {{"cycles", cycles},
