@@ -147,6 +147,16 @@ static void buildValidCaseParameters(const ValidList& valid) {
                  "corner dominates (the extrusion's die lip), 2 for a smooth solution; the estimate is "
                  "(phi_refined - phi) / (1 - 2^-p)",
                  inRange(0.1, 10.0));
+  estimation.set("Coarser Levels", 2,
+                 "Method = Coarser Mesh: how many meshes coarser than the run's are solved (at most Mesh/Uniform "
+                 "Refinements): 1 gives eta = (phi - phi_2h) / (2^Order - 1); 2 fits the two-term error "
+                 "A h^Order + B h^(Second Order) to the three levels (the extrusion's die lip and bulk, of opposite "
+                 "signs, which two levels cannot tell apart); the adaptive loop meshes its cycles refined this often",
+                 intInRange(1, 2));
+  estimation.set("Second Order", 2.0,
+                 "Method = Coarser Mesh with 2 Coarser Levels: the order of the error's second term (the smooth bulk: "
+                 "2), larger than Order",
+                 inRange(0.1, 10.0));
   ParameterList& adaptivity = valid->sublist(
       "Adaptivity", false,
       "adaptive meshing to a requested accuracy (docs/theory.md §7): solve, estimate (Error Estimation/Method; Newton Step when None), size the next "
@@ -221,6 +231,12 @@ void validateCase(ParameterList& params) {
   if (!params.isSublist("Mesh") || !params.sublist("Mesh").isParameter("File"))
     throw InputError("the case has no Mesh/File: name a .msh or .geo file");
   validateSublist(params.sublist("Mesh"), valid.sublist("Mesh"), "Mesh", 0);
+
+  const ParameterList& estimation = params.sublist("Error Estimation");
+  if (estimation.get<double>("Second Order") <= estimation.get<double>("Order"))
+    throw InputError("Error Estimation/Second Order = " + std::to_string(estimation.get<double>("Second Order")) +
+                     " must be larger than Error Estimation/Order = " + std::to_string(estimation.get<double>("Order")) +
+                     " (the two terms of the error the Coarser Mesh estimate fits)");
 
   for (const auto& name : params.sublist("Output").get<Teuchos::Array<std::string>>("Cell Fields"))
     if (std::find(cellFieldNames().begin(), cellFieldNames().end(), name) == cellFieldNames().end())

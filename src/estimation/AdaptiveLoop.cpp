@@ -12,6 +12,7 @@
 #include "flowform/core/Budget.hpp"
 #include "flowform/core/Clock.hpp"
 #include "flowform/core/Log.hpp"
+#include "flowform/estimation/EstimationMethods.hpp"
 #include "flowform/mesh/SizeField.hpp"
 
 namespace flowform {
@@ -36,16 +37,22 @@ std::vector<double> nodalSizes(const Mesh& mesh) {
 }
 
 constexpr double kLocalOrder = 2.0;  ///< s: a node's share of the estimate ∝ h^s (AdaptiveLoop.hpp)
-constexpr double kMinRatio = 0.125, kMaxRatio = 1.5;  ///< h'/h per cycle at most this much finer, coarser
+constexpr double kMinRatio = 1.0 / 32.0, kMaxRatio = 1.5;  ///< h'/h per cycle at most this much finer, coarser
 /// No size below this fraction of the first mesh's smallest: gmsh made a sliver (a zero-area
 /// cell at the die lip) from sizes 10⁴ times finer than the first mesh's.
 constexpr double kSmallestSize = 1.0 / 128.0;
 
-/// The next mesh's nodal sizes from the indicators (AdaptiveLoop.hpp).
+/// The sizes the next run's mesh should have, at the nodes of the mesh the indicators are on
+/// (AdaptiveLoop.hpp); that mesh (as made) is `on`.
 std::vector<double> nextSizes(const CaseRun& sim, const std::vector<std::string>& targets, double tolerance,
-                              double minSize, double maxSize, double maxDofs) {
-  const Mesh& mesh = sim.problem().mesh();
+                              double minSize, double maxSize, double maxDofs, Mesh& on) {
   const ErrorEstimate& estimate = sim.errorEstimate();
+  // The free surfaces' moves stretch this mesh and the next alike (carryShape maps the next mesh
+  // as it maps this one): the sizes are those of the mesh as made, where the next mesh is made.
+  on = estimate.indicatorMesh ? *estimate.indicatorMesh : sim.problem().meshAsMade();
+  // The coarser level's cells are split in four in the run's mesh: its sizes are twice the run's.
+  const double level = estimate.indicatorMesh ? 0.5 : 1.0;
+  const Mesh& mesh = on;
   std::vector<double> e(mesh.numNodes(), 0.0);
   for (const std::string& name : targets) {
     const std::vector<double>& shares = estimate.indicators.at(name);
@@ -63,9 +70,8 @@ std::vector<double> nextSizes(const CaseRun& sim, const std::vector<std::string>
   double sum = 0.0;
   for (double v : e) sum += std::pow(v, 2.0 / (s + 2.0));
   const double lambda = sum > 0.0 ? std::pow(0.5 / sum, (s + 2.0) / s) : 0.0;
-  // The sizes are those of the mesh as made, where the next mesh is made (the free surfaces'
-  // moves stretch both alike: carryShape maps the next mesh as it maps this one).
-  std::vector<double> h = nodalSizes(sim.problem().meshAsMade()), next(h.size());
+  std::vector<double> h = nodalSizes(mesh), next(h.size());
+  for (double& v : h) v *= level;
   double predictedNodes = 0.0;
   for (GO n = 0; n < mesh.numNodes(); ++n) {
     const double ratio = e[n] > 0.0 ? std::clamp(std::pow(lambda / e[n], 1.0 / (s + 2.0)), kMinRatio, kMaxRatio) : kMaxRatio;
@@ -100,8 +106,14 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
   // Later cycles are meshed with the sizes the field gives, as they are: the case's Uniform
   // Refinements and Size Factor shaped the first mesh, from which the field's sizes are taken.
   Teuchos::ParameterList remeshed = caseParams;
-  remeshed.sublist("Mesh").set("Uniform Refinements", 0);
   remeshed.sublist("Mesh").set("Size Factor", 1.0);
+  // With the coarser-mesh estimate (CoarserMeshEstimate.hpp) each later cycle's mesh is the
+  // field's mesh at 2^L times the sizes refined L times (L = its Coarser Levels): the estimate's
+  // coarsest level is the field's mesh itself. Not with free surfaces (that estimate falls back
+  // to the two-level one there).
+  const std::string method = caseParams.sublist("Error Estimation").get<std::string>("Method");
+  const bool nested = (method == "None" ? estimationMethods().front().name : method) == CoarserMeshEstimate::kName;
+  int nestLevels = 0;  // the field's mesh refined this often is the next cycle's
   std::unique_ptr<CaseRun> sim, previous;
   SizeField field;
   double minSize = 0.0, maxSize = 0.0;
@@ -124,6 +136,9 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
       const std::vector<double> h = nodalSizes(sim->problem().meshAsMade());
       maxSize = *std::max_element(h.begin(), h.end());
       minSize = kSmallestSize * *std::min_element(h.begin(), h.end());
+      if (nested && sim->problem().freeSurfaces().empty())
+        nestLevels = caseParams.sublist("Error Estimation").get<int>("Coarser Levels");
+      remeshed.sublist("Mesh").set("Uniform Refinements", nestLevels);
     }
     if (previous) sim->problem().startFrom(previous->problem());
     sim->deferFiniteDifferenceCheck();  // only the last cycle's sensitivities are checked
@@ -191,7 +206,10 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
       break;
     }
     // On the mesh as made: a free-surface update moved boundary nodes off the .geo's curves.
-    field = sizeFieldOnMesh(sim->problem().meshAsMade(), nextSizes(*sim, targets, tolerance / safety, minSize, maxSize, maxDofs));
+    Mesh on;
+    std::vector<double> sizes = nextSizes(*sim, targets, tolerance / safety, minSize, maxSize, maxDofs, on);
+    for (double& v : sizes) v *= std::pow(2.0, nestLevels);  // the coarsest level's sizes
+    field = sizeFieldOnMesh(on, sizes);
     previous = std::move(sim);
   }
   nlohmann::json block = {{"cycles", cycles},

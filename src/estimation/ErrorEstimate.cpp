@@ -12,15 +12,15 @@ void ErrorEstimate::report(nlohmann::json& summary) const {
   if (!sensitivities.empty()) summary["sensitivities_error_estimate"] = sensitivities;
   summary["error_estimation"] = {{"method", method},
                                  {"order", order},
-                                 {"refined_dofs", refinedDofs},
-                                 {"refined_functionals", refinedFunctionals},
+                                 {otherLevel + "_dofs", refinedDofs},
+                                 {otherLevel + "_functionals", refinedFunctionals},
                                  {"seconds", seconds},
                                  {"timings", timings}};
   if (!details.empty()) summary["error_estimation"]["details"] = details;
-  if (!refinedSensitivities.empty()) summary["error_estimation"]["refined_sensitivities"] = refinedSensitivities;
+  if (!refinedSensitivities.empty()) summary["error_estimation"][otherLevel + "_sensitivities"] = refinedSensitivities;
   if (!sensitivitiesTotalShape.empty()) {
     summary["sensitivities_total_shape_error_estimate"] = sensitivitiesTotalShape;
-    summary["error_estimation"]["refined_sensitivities_total_shape"] = refinedSensitivitiesTotalShape;
+    summary["error_estimation"][otherLevel + "_sensitivities_total_shape"] = refinedSensitivitiesTotalShape;
   }
   if (refinedSurfaceUpdates >= 0) summary["error_estimation"]["refined_free_surface_iterations"] = refinedSurfaceUpdates;
 }

@@ -20,7 +20,7 @@ const std::vector<EstimationMethodInfo>& estimationMethods() {
 
 int estimationMethodIndex(const std::string& name) { return indexByName(estimationMethods(), name); }
 
-ErrorEstimate estimateErrors(int method, const CaseRun& coarse, const CaseRunFactory& makeRun,
+ErrorEstimate estimateErrors(int method, CaseRun& coarse, const CaseRunFactory& makeRun,
                              const std::vector<std::string>& indicatorResponses) {
   ErrorEstimate estimate;
   if (!visitByIndex(RegisteredEstimationMethods{}, method, [&](auto tag) {

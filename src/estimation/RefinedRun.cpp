@@ -61,31 +61,35 @@ void addIndicators(const Problem& coarse, Problem& fine, const std::vector<std::
   }
 }
 
+void estimateFromOtherLevel(const CaseRun& run, const std::map<std::string, double>& other,
+                            const ResponseDerivatives* otherSensitivities, const ResponseDerivatives* otherTotalShape,
+                            double factor, ErrorEstimate& estimate) {
+  estimate.refinedFunctionals = other;
+  for (const auto& [name, value] : run.functionals()) {
+    auto it = other.find(name);
+    if (it != other.end()) estimate.functionals[name] = factor * (it->second - value);
+  }
+  // η of each derivative (response → parameter), from this level's and the other's values.
+  auto estimateDerivatives = [&](const ResponseDerivatives& values, ResponseDerivatives& kept, ResponseDerivatives& eta) {
+    for (const auto& [name, byParameter] : values)
+      for (const auto& [parameter, value] : byParameter) eta[name][parameter] = factor * (kept[name][parameter] - value);
+  };
+  if (otherTotalShape && run.shapeDerivative().computed) {
+    estimate.refinedSensitivitiesTotalShape = *otherTotalShape;
+    estimateDerivatives(run.shapeDerivative().responses, estimate.refinedSensitivitiesTotalShape,
+                        estimate.sensitivitiesTotalShape);
+  }
+  if (otherSensitivities && run.sensitivity().computed()) {
+    estimate.refinedSensitivities = *otherSensitivities;
+    estimateDerivatives(run.sensitivity().responseDerivatives(), estimate.refinedSensitivities, estimate.sensitivities);
+  }
+}
+
 void extrapolate(const CaseRun& coarseRun, const std::map<std::string, double>& refined,
                  const ResponseDerivatives* refinedSensitivities, const ResponseDerivatives* refinedTotalShape,
                  ErrorEstimate& estimate) {
-  const double factor = 1.0 / (1.0 - std::pow(2.0, -estimate.order));
-  estimate.refinedFunctionals = refined;
-  for (const auto& [name, value] : coarseRun.functionals()) {
-    auto it = refined.find(name);
-    if (it != refined.end()) estimate.functionals[name] = factor * (it->second - value);
-  }
-  // η of each derivative (response → parameter), from the coarse and the refined values.
-  auto estimateDerivatives = [&](const ResponseDerivatives& coarseValues, ResponseDerivatives& kept,
-                                 ResponseDerivatives& eta) {
-    for (const auto& [name, byParameter] : coarseValues)
-      for (const auto& [parameter, value] : byParameter) eta[name][parameter] = factor * (kept[name][parameter] - value);
-  };
-  if (refinedTotalShape && coarseRun.shapeDerivative().computed) {
-    estimate.refinedSensitivitiesTotalShape = *refinedTotalShape;
-    estimateDerivatives(coarseRun.shapeDerivative().responses, estimate.refinedSensitivitiesTotalShape,
-                        estimate.sensitivitiesTotalShape);
-  }
-  if (refinedSensitivities && coarseRun.sensitivity().computed()) {
-    estimate.refinedSensitivities = *refinedSensitivities;
-    estimateDerivatives(coarseRun.sensitivity().responseDerivatives(), estimate.refinedSensitivities,
-                        estimate.sensitivities);
-  }
+  estimateFromOtherLevel(coarseRun, refined, refinedSensitivities, refinedTotalShape,
+                         1.0 / (1.0 - std::pow(2.0, -estimate.order)), estimate);
 }
 
 }  // namespace flowform

@@ -3,6 +3,7 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -133,6 +134,19 @@ double estimateCells(const BoundaryMeasure& m, CellType type) {
   const double meanInverseSquare = weighted / length;  // mean of 1/l² along the boundary
   const double cellShape = type == CellType::Triangle3 ? std::sqrt(3.0) / 4.0 : 1.0;
   return m.area * meanInverseSquare / cellShape;
+}
+
+double estimateCells(const SizeField& field, CellType type) {
+  const double cellShape = type == CellType::Triangle3 ? std::sqrt(3.0) / 4.0 : 1.0;
+  double cells = 0.0;
+  for (int t = 0; t < field.numTriangles(); ++t) {
+    const double* v = &field.triangles[12 * t];  // x1 x2 x3 y1 y2 y3 z1 z2 z3 s1 s2 s3
+    const double area = 0.5 * std::abs((v[1] - v[0]) * (v[5] - v[3]) - (v[2] - v[0]) * (v[4] - v[3]));
+    double inverseSquare = 0.0;
+    for (int a = 0; a < 3; ++a) inverseSquare += 1.0 / (3.0 * std::max(v[9 + a] * v[9 + a], 1e-300));
+    cells += area * inverseSquare / cellShape;
+  }
+  return cells;
 }
 
 void refuseTooMany(const ReadOptions& opt, double cells, const std::string& how) {

@@ -99,13 +99,14 @@ void loadModel(const ReadOptions& opt, const SizeField* sizeField) {
         gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
       });
     gmshStep(opt.path, "meshing its curves", [] { gmsh::model::mesh::generate(1); });
-    const BoundaryMeasure boundary = measureBoundary();
-    cells = estimateCells(boundary, opt.cellType);
+    const bool fromField = sizeField && !sizeField->empty();
+    cells = fromField ? estimateCells(*sizeField, opt.cellType) : estimateCells(measureBoundary(), opt.cellType);
+    const std::string source = fromField ? " (estimated from the size field)" : " (estimated from its 1-D mesh)";
     if (cells * std::pow(4.0, opt.refinements) > static_cast<double>(opt.maxCells))
       refuseTooMany(opt, cells * std::pow(4.0, opt.refinements),
                     opt.refinements > 0 ? "meshing and refining it " + std::to_string(opt.refinements) +
-                                              " times would make (estimated from its 1-D mesh)"
-                                        : "meshing it would make (estimated from its 1-D mesh)");
+                                              " times would make" + source
+                                        : "meshing it would make" + source);
     gmshStep(opt.path, "meshing it", [] { gmsh::model::mesh::generate(2); });
   }
   std::vector<int> types;

@@ -3,12 +3,14 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
 #include "flowform/core/Types.hpp"
+#include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
 
@@ -24,7 +26,10 @@ struct ErrorEstimate {
   std::map<std::string, std::map<std::string, double>> sensitivities;
   /// η of the total dφ/dh through the moving free surfaces (ShapeDerivative), when computed.
   std::map<std::string, std::map<std::string, double>> sensitivitiesTotalShape;
-  /// φ_f and dφ_f/dh (frozen shape and total) on the refined mesh.
+  /// The level the estimate compared with: "refined" (the mesh refined once more) or "coarser"
+  /// (the mesh one uniform refinement coarser); the summary's keys say it.
+  std::string otherLevel = "refined";
+  /// φ and dφ/dh (frozen shape and total) on that level (named refined* for the refined one).
   std::map<std::string, double> refinedFunctionals;
   std::map<std::string, std::map<std::string, double>> refinedSensitivities;
   std::map<std::string, std::map<std::string, double>> refinedSensitivitiesTotalShape;
@@ -32,6 +37,9 @@ struct ErrorEstimate {
   int refinedSurfaceUpdates = -1;
   /// Per node of the coarse mesh and per indicator response: |share of η| (replicated).
   std::map<std::string, std::vector<double>> indicators;
+  /// The mesh (as made) whose nodes the indicators are on when it is not the run's: the coarser
+  /// level's, whose sizes are twice the run's.
+  std::shared_ptr<const Mesh> indicatorMesh;
   GO refinedDofs = 0;
   double seconds = 0.0;
   /// Where the seconds went (refined setup, transfer, assembly, factorization, solves, ...).

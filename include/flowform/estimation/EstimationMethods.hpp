@@ -1,6 +1,6 @@
 // The registry of error-estimate methods (Error Estimation/Method): the one list a new method is
 // added to. A method is one file in estimation/ (a struct like NewtonStepEstimate: kName,
-// kDescription and a static estimate(coarse run, run factory, indicator responses)) and one entry
+// kDescription and a static estimate(run, run factory, indicator responses)) and one entry
 // in RegisteredEstimationMethods below; the Method choices, their description and the dispatch
 // follow from the list.
 #pragma once
@@ -9,13 +9,14 @@
 #include <vector>
 
 #include "flowform/core/TypeList.hpp"
+#include "flowform/estimation/CoarserMeshEstimate.hpp"
 #include "flowform/estimation/NewtonStepEstimate.hpp"
 #include "flowform/estimation/TwoLevelEstimate.hpp"
 
 namespace flowform {
 
 /// The first is the default: the method the adaptive loop uses when the case's Method is None.
-using RegisteredEstimationMethods = TypeList<NewtonStepEstimate, TwoLevelEstimate>;
+using RegisteredEstimationMethods = TypeList<CoarserMeshEstimate, NewtonStepEstimate, TwoLevelEstimate>;
 
 /// A method's static facts, by its index in RegisteredEstimationMethods.
 struct EstimationMethodInfo {
@@ -25,8 +26,9 @@ const std::vector<EstimationMethodInfo>& estimationMethods();
 /// Index of the method called `name`, −1 when there is none.
 int estimationMethodIndex(const std::string& name);
 
-/// The estimate of `coarse`'s responses by method `method` (an index of estimationMethods()).
-ErrorEstimate estimateErrors(int method, const CaseRun& coarse, const CaseRunFactory& makeRun,
+/// The estimate of `coarse`'s responses by method `method` (an index of estimationMethods()); a
+/// method may refactor `coarse`'s model (CoarserMeshEstimate), its solution stays.
+ErrorEstimate estimateErrors(int method, CaseRun& coarse, const CaseRunFactory& makeRun,
                              const std::vector<std::string>& indicatorResponses);
 
 }  // namespace flowform

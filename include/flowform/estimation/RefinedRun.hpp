@@ -32,9 +32,14 @@ void addIndicators(const Problem& coarse, Problem& fine, const std::vector<std::
 /// Response → parameter → value.
 using ResponseDerivatives = std::map<std::string, std::map<std::string, double>>;
 
-/// η of every response of `coarseRun` (and of its sensitivities and total shape derivatives,
-/// when both levels have them) from the refined values: η = (φ_f − φ_h) / (1 − 2^(−estimate.order)).
-/// The refined values are kept in the estimate. A null derivative map: none on the refined mesh.
+/// η of every response of `run` (and of its sensitivities and total shape derivatives, when
+/// both levels have them) from another level's values: η = factor (φ_other − φ_run). The other
+/// level's values are kept in the estimate. A null derivative map: none on the other level.
+void estimateFromOtherLevel(const CaseRun& run, const std::map<std::string, double>& other,
+                            const ResponseDerivatives* otherSensitivities, const ResponseDerivatives* otherTotalShape,
+                            double factor, ErrorEstimate& estimate);
+
+/// From the refined level: η = (φ_f − φ_h) / (1 − 2^(−estimate.order)).
 void extrapolate(const CaseRun& coarseRun, const std::map<std::string, double>& refined,
                  const ResponseDerivatives* refinedSensitivities, const ResponseDerivatives* refinedTotalShape,
                  ErrorEstimate& estimate);

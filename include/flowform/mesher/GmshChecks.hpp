@@ -1,6 +1,6 @@
 // The mesher's checks of its input, made on the model gmsh holds before the surfaces are
 // meshed: the Geo Parameters against what the .geo declares, and the mesh's size estimated from
-// the 1-D mesh against Mesh/Maximum Cells (GmshMesher.hpp).
+// the 1-D mesh (or the size field, when one is given) against Mesh/Maximum Cells (GmshMesher.hpp).
 #pragma once
 
 #include <string>
@@ -8,6 +8,7 @@
 
 #include "flowform/mesh/Mesh.hpp"
 #include "flowform/mesh/ReadOptions.hpp"
+#include "flowform/mesh/SizeField.hpp"
 
 namespace flowform {
 
@@ -28,6 +29,12 @@ BoundaryMeasure measureBoundary();
 
 /// The number of cells the 2-D mesh will have, estimated from the 1-D mesh before meshing.
 double estimateCells(const BoundaryMeasure& m, CellType type);
+
+/// The number of cells a mesh made to `field` will have: the integral of 1/(c h²) over the
+/// field's triangles (c the area of a cell of edge h, as in estimateCells), 1/h² taken as its
+/// mean at the corners. The 1-D estimate weighs every boundary edge alike and overcounts a
+/// graded mesh many times over: an adaptive cycle's boundary is fine along the die land only.
+double estimateCells(const SizeField& field, CellType type);
 
 /// InputError: the mesh would have about `cells` cells, more than opt.maxCells (`how` says
 /// how that was found).

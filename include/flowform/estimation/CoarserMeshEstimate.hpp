@@ -1,0 +1,54 @@
+// The nested estimate of every response (Error Estimation/Method = Coarser Mesh; docs/theory.md
+// §7): the run's mesh is a mesh refined once uniformly (Mesh/Uniform Refinements ≥ 1), and the
+// same case is solved on the mesh one refinement coarser, started from the run's solution
+// (injected: the coarser nodes are nodes of the run's mesh) and contact statuses. With an error
+// that falls like h^p under uniform refinement, φ − φ_2h ≈ 2^p (φ − φ_h), so
+//
+//     φ(u) − φ(u_h) ≈ η_φ = (φ_h − φ_2h) / (2^p − 1),
+//
+// the same two levels as the two-level estimate, the answer taken on the finer one. What the
+// estimate costs is a solve with a quarter of the run's dofs from a start next to its answer
+// (a few Newton steps) instead of Newton steps on four times the dofs: the adaptive loop, which
+// meshes its cycles this way with this method, gets the refined level's accuracy for the
+// estimate's price. The sensitivities get η = (dφ_h/dh − dφ_2h/dh) / (2^p − 1) (DDM on both).
+//
+// The indicators are the two-level estimate's with the levels shifted by one: the run's
+// residual at the interpolated coarser solution I u_2h, weighted by ζ_h = c − z_h, the adjoint
+// of the exact K_h at I u_2h (one factorization at the run's level), localized as
+// Σ_i R_h,i (ζ_h − I_2h ζ_h)_i over the run's nodes and spread to the coarser mesh's nodes
+// (estimation/RefinedRun coarseIndicator); ErrorEstimate::indicatorMesh is that mesh. As in the
+// two-level estimate, that linearization has the coarser level's statuses carried as they are
+// (no zone limit decided, no complementarity: with the run's converged ones the die lip's
+// penalty residual took the indicators and the loop coarsened the bulk cycle after cycle); the
+// run's statuses are put back afterwards.
+//
+// Falls back to the Newton Step estimate on a mesh that is not refined (Uniform Refinements 0:
+// the adaptive loop's first cycle) and to the two-level one with free surfaces (the coarser
+// level's own free-surface loop moves its surface off the run's, where the indicators are
+// interpolated); error_estimation.details.coarser_mesh_fallback = 1 says so.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "flowform/estimation/CaseRun.hpp"
+#include "flowform/estimation/ErrorEstimate.hpp"
+
+namespace flowform {
+
+struct CoarserMeshEstimate {
+  static constexpr const char* kName = "Coarser Mesh";
+  static constexpr const char* kDescription =
+      "the case solved again on the mesh one uniform refinement coarser than the run's (Mesh/Uniform Refinements >= "
+      "1), from the run's solution: eta = (phi - phi_coarser) / (2^Order - 1), a quarter of the dofs; the adaptive "
+      "loop then meshes every cycle after the first refined once; on an unrefined mesh the Newton Step estimate, "
+      "with free surfaces the two-level one";
+  /// The estimate of `run`'s converged responses (and sensitivities, when computed), with
+  /// indicators for `indicatorResponses` on the coarser mesh. `run`'s model is refactored for
+  /// the indicators (its solution and statuses are kept). When the coarser solve does not
+  /// converge there is no estimate (`failure` says why). Collective.
+  static ErrorEstimate estimate(CaseRun& run, const CaseRunFactory& makeRun,
+                                const std::vector<std::string>& indicatorResponses);
+};
+
+}  // namespace flowform

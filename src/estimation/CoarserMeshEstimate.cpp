@@ -1,0 +1,145 @@
+#include "flowform/estimation/CoarserMeshEstimate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "flowform/core/Budget.hpp"
+#include "flowform/core/Clock.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/discretization/SolutionTransfer.hpp"
+#include "flowform/estimation/NewtonStepEstimate.hpp"
+#include "flowform/estimation/RefinedRun.hpp"
+#include "flowform/estimation/ResponseAdjoint.hpp"
+#include "flowform/estimation/TwoLevelEstimate.hpp"
+
+namespace flowform {
+
+ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& makeRun,
+                                            const std::vector<std::string>& indicatorResponses) {
+  const auto start = std::chrono::steady_clock::now();
+  Problem& fine = run.problem();
+  const int refinements = fine.parameters().sublist("Mesh").get<int>("Uniform Refinements");
+  if (refinements < 1 || !fine.freeSurfaces().empty()) {
+    log() << "error estimate: " << (refinements < 1 ? "the mesh is not refined (Mesh/Uniform Refinements = 0): the "
+                                                      "Newton Step estimate"
+                                                    : "free surfaces: the two-level estimate")
+          << " instead of the coarser mesh's\n";
+    ErrorEstimate other = refinements < 1 ? NewtonStepEstimate::estimate(run, makeRun, indicatorResponses)
+                                          : TwoLevelEstimate::estimate(run, makeRun, indicatorResponses);
+    other.details["coarser_mesh_fallback"] = 1.0;
+    return other;
+  }
+  ErrorEstimate estimate;
+  estimate.method = kName;
+  estimate.otherLevel = "coarser";
+  estimate.order = fine.parameters().sublist("Error Estimation").get<double>("Order");
+  const BudgetScope scope("the coarser-mesh error estimate (the case on the mesh one refinement coarser)", nullptr);
+  auto clock = std::chrono::steady_clock::now();
+  auto lap = [&](const std::string& what) {
+    estimate.timings[what] += secondsSince(clock);
+    clock = std::chrono::steady_clock::now();
+  };
+
+  // The same case one (and two) refinements coarser, on the size field the run's mesh was made
+  // with, each started from the next finer level's solution.
+  const Teuchos::ParameterList& settings = fine.parameters().sublist("Error Estimation");
+  const int levels = std::min(settings.get<int>("Coarser Levels"), refinements);
+  std::vector<std::unique_ptr<CaseRun>> coarser;
+  for (int level = 1; level <= levels; ++level) {
+    Teuchos::ParameterList params = fine.parameters();
+    params.sublist("Mesh").set("Uniform Refinements", refinements - level);
+    params.sublist("Error Estimation").set("Method", "None");
+    if (params.isSublist("Adaptivity")) params.remove("Adaptivity");
+    if (params.isSublist("Sensitivity")) params.sublist("Sensitivity").set("Finite Difference Check", false);
+    coarser.push_back(makeRun(params, &fine.sizeField()));
+    Problem& problem = coarser.back()->problem();
+    const std::string name = "level_" + std::to_string(level);
+    lap(name + "_setup");
+    problem.startFrom(level == 1 ? static_cast<const Problem&>(fine) : coarser[level - 2]->problem());
+    coarser.back()->run();
+    lap(name + "_run");
+    if (coarser.back()->exitStatus() != 0) {
+      estimate.failure = "the solve on the mesh " + std::to_string(level) + " refinement(s) coarser (" +
+                         std::to_string(problem.dofMap().numGlobalDofs()) + " dofs) did not converge: " +
+                         problem.report().message;
+      estimate.seconds = secondsSince(start);
+      return estimate;
+    }
+    estimate.details[name + "_dofs"] = static_cast<double>(problem.dofMap().numGlobalDofs());
+    estimate.details[name + "_newton_iterations"] = problem.report().newtonIterations;
+  }
+  Problem& coarse = coarser.front()->problem();
+  estimate.refinedDofs = static_cast<GO>(coarse.dofMap().numGlobalDofs());
+  // One coarser level: η = (φ_h − φ_2h) / (2^p − 1) = −(φ_2h − φ_h) / (2^p − 1). Two: with
+  // D1 = φ_2h − φ_h, D2 = φ_4h − φ_2h and the error A h^p + B h^q, a = A h^p (2^p − 1) and
+  // b = B h^q (2^q − 1) solve D1 = a + b, D2 = 2^p a + 2^q b, and η = −a/(2^p − 1) − b/(2^q − 1)
+  // = c1 D1 + c2 D2 (CoarserMeshEstimate.hpp).
+  const double p = estimate.order, q = settings.get<double>("Second Order");
+  const double k = 1.0 / (std::pow(2.0, p) - 1.0) - 1.0 / (std::pow(2.0, q) - 1.0);
+  const double c2 = levels == 2 ? k / (std::pow(2.0, q) - std::pow(2.0, p)) : 0.0;
+  const double c1 = -1.0 / (std::pow(2.0, p) - 1.0) - std::pow(2.0, p) * c2;
+  estimate.details["c1"] = c1;
+  estimate.details["c2"] = c2;
+  const ResponseDerivatives* sensitivities =
+      coarser.front()->sensitivity().computed() ? &coarser.front()->sensitivity().responseDerivatives() : nullptr;
+  estimateFromOtherLevel(run, coarser.front()->functionals(), sensitivities, nullptr, c1, estimate);
+  if (levels == 2) {  // + c2 D2 for every response and sensitivity both levels have
+    const CaseRun& second = *coarser.back();
+    for (auto& [name, eta] : estimate.functionals) {
+      const auto at = second.functionals().find(name);
+      if (at == second.functionals().end()) continue;
+      eta += c2 * (at->second - coarser.front()->functionals().at(name));
+      estimate.details["level_2_" + name] = at->second;
+    }
+    if (sensitivities && second.sensitivity().computed()) {
+      const ResponseDerivatives& far = second.sensitivity().responseDerivatives();
+      for (auto& [name, byParameter] : estimate.sensitivities)
+        for (auto& [parameter, eta] : byParameter) {
+          const auto response = far.find(name);
+          if (response == far.end() || !response->second.count(parameter)) continue;
+          eta += c2 * (response->second.at(parameter) - sensitivities->at(name).at(parameter));
+        }
+    }
+  }
+
+  if (!indicatorResponses.empty()) {
+    Vector interpolated(fine.dofMap().ownedMap()), residual(fine.dofMap().ownedMap()), zeta(fine.dofMap().ownedMap());
+    interpolate(coarse.mesh(), coarse.dofMap(), replicate(coarse.solution(), coarse.dofMap()), fine.mesh(),
+                fine.dofMap(), interpolated);
+    fine.boundaryConditions().imposeOnSolution(interpolated);
+    // The coarser level's statuses, carried as they are (no zone limit decided, no
+    // complementarity), for the indicators' linearization; the run's own afterwards.
+    std::vector<ContactWall>& walls = fine.contactWalls();
+    std::vector<ContactWall::State> kept;
+    std::vector<bool> complementarity;
+    for (ContactWall& wall : walls) {
+      kept.push_back(wall.state());
+      complementarity.push_back(wall.complementarity());
+      wall.leaveComplementarity();
+      for (const ContactWall& from : coarse.contactWalls())
+        if (from.name() == wall.name()) wall.takeStatusesFrom(from);
+    }
+    FlowModel& model = fine.model();
+    model.residual(interpolated, residual);
+    bool factor = true;
+    for (const std::string& name : indicatorResponses) {
+      if (responseAdjoint(model, interpolated, fine.responses(), name, fine.mesh(), zeta, factor))
+        estimate.indicators[name] = coarseIndicator(coarse, fine, residual, zeta);
+      factor = false;  // the first adjoint factored K_h at I u_2h
+    }
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+      if (complementarity[w]) walls[w].enterComplementarity();
+      walls[w].restore(kept[w]);
+    }
+    estimate.indicatorMesh = std::make_shared<const Mesh>(coarse.meshAsMade());
+    lap("indicators");
+  }
+  estimate.estimated = true;
+  estimate.seconds = secondsSince(start);
+  log() << "error estimate: " << levels << " coarser level(s), the first " << estimate.refinedDofs << " dofs, in "
+        << estimate.seconds << " s\n";
+  return estimate;
+}
+
+}  // namespace flowform
