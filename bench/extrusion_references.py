@@ -2,7 +2,7 @@
 effectivities (docs/theory.md §7, docs/BENCHMARKS.md §10), independent of the estimator.
 
 usage: scripts/python bench/extrusion_references.py [FLOWFORM] [--families "H:HC,...;H:HC,..."] [--nu 0,0.1,0.3]
-                                     [--scenes plane,axisym] [--json FILE] [--workdir DIR] [--reuse]
+                                     [--refinements R0-R1] [--scenes plane,axisym] [--json FILE] [--workdir DIR] [--reuse]
                                      [--from-json FILE] [--effectivity H:HC]
 
 The error of the ram force has two parts with different orders (docs/extrusion_verification.md
@@ -15,6 +15,12 @@ by least squares to
         F(h, hc) = F_inf + a hc + b h²,
 the reference is F_inf and its uncertainty the largest fit residual (the mesh-to-mesh noise of
 the contact pattern, which no extrapolation removes). The same for dF/dnu (DDM).
+
+--refinements R0-R1 makes the families nested instead: every mesh of --families is also run
+refined uniformly r = R0..R1 times (Mesh/Uniform Refinements; h and hc halve with each), e.g.
+--families "0.1:0.01;0.2:0.008" --refinements 1-3. Refining one mesh keeps its pattern (the
+same cells split), so the mesh-to-mesh noise of unrelated meshes leaves the fit: its residual
+is then the model's error, several times smaller.
 
 --effectivity H:HC then runs each scene on that mesh with the two-level estimate and prints
 eta / (ref - value) for F and dF/dnu, with the reference's uncertainty in units of the true
@@ -61,6 +67,7 @@ def main():
     ap.add_argument("flowform", nargs="?", default=os.path.join(root, "build/flowform"))
     ap.add_argument("--families", default="0.2:0.05,0.1:0.025,0.05:0.0125;0.2:0.008,0.1:0.004,0.05:0.002")
     ap.add_argument("--nu", default="0,0.1,0.3")
+    ap.add_argument("--refinements", default="0-0", help="R0-R1: every mesh also refined R0..R1 times")
     ap.add_argument("--scenes", default="plane,axisym")
     ap.add_argument("--json")
     ap.add_argument("--workdir", default="/tmp/flowform_references")
@@ -68,7 +75,11 @@ def main():
     ap.add_argument("--from-json")
     ap.add_argument("--effectivity")
     a = ap.parse_args()
-    meshes = [tuple(float(v) for v in p.split(":")) for fam in a.families.split(";") for p in fam.split(",")]
+    r0, r1 = (int(v) for v in a.refinements.split("-"))
+    bases = [tuple(float(v) for v in p.split(":")) for fam in a.families.split(";") for p in fam.split(",")]
+    # (h, hc, refinements): the sizes the fit sees are h / 2^r, hc / 2^r
+    runs = [(h, hc, r) for h, hc in bases for r in range(r0, r1 + 1)]
+    meshes = [(h / 2 ** r, hc / 2 ** r) for h, hc, r in runs]
     results = {}
     if a.from_json:
         with open(a.from_json) as f:
@@ -76,10 +87,11 @@ def main():
     for scene in ([] if a.from_json else a.scenes.split(",")):
         for nu in a.nu.split(","):
             F, D, dofs = [], [], []
-            for h, hc in meshes:
-                s = run_case(a, root, scene, nu, h, hc, [], f"{scene}_nu{nu}_h{h}_hc{hc}")
-                F.append((h, hc, s["functionals"]["ram_force"]))
-                D.append((h, hc, s["sensitivities"]["ram_force"]["Friction Coefficient"]))
+            for (h, hc, r), (hr, hcr) in zip(runs, meshes):
+                s = run_case(a, root, scene, nu, h, hc, [f"Mesh/Uniform Refinements={r}"],
+                             f"{scene}_nu{nu}_h{h}_hc{hc}" + (f"_r{r}" if r else ""))
+                F.append((hr, hcr, s["functionals"]["ram_force"]))
+                D.append((hr, hcr, s["sensitivities"]["ram_force"]["Friction Coefficient"]))
                 dofs.append(s["dofs"])
             entry = {"meshes": meshes, "dofs": dofs, "F": [v for *_, v in F], "dFdnu": [v for *_, v in D]}
             for key, pts in (("F", F), ("dFdnu", D)):

@@ -167,7 +167,12 @@ static void buildValidCaseParameters(const ValidList& valid) {
                  "--set Adaptivity/Enabled=false on a scene that adapts by default");
   adaptivity.set("Responses", Teuchos::Array<std::string>(),
                  "names of the responses (" + adaptivityTargets() + ") whose relative error is to be met");
-  adaptivity.set("Target Relative Error", 5e-3, "|estimated error| / |value| to reach for every named response",
+  adaptivity.set("Sensitivities", Teuchos::Array<std::string>(),
+                 "derivatives dphi/dh whose relative error is to be met too, each 'response/parameter': a response "
+                 "of the kinds Responses takes and a Sensitivity/Parameters entry (e.g. 'ram_force/Friction "
+                 "Coefficient'); the mesh is sized by the response's indicators scaled to the derivative's estimate");
+  adaptivity.set("Target Relative Error", 5e-3,
+                 "|estimated error| / |value| to reach for every named response and sensitivity",
                  inRange(1e-8, 1.0));
   adaptivity.set("Safety Factor", 1.5,
                  "the loop stops when this times the estimated relative error meets the target: the estimate's "
@@ -232,8 +237,12 @@ void validateCase(ParameterList& params) {
     throw InputError("the case has no Mesh/File: name a .msh or .geo file");
   validateSublist(params.sublist("Mesh"), valid.sublist("Mesh"), "Mesh", 0);
 
+  // The two-term fit of the Coarser Mesh estimate (the adaptive loop's when Method is None).
   const ParameterList& estimation = params.sublist("Error Estimation");
-  if (estimation.get<double>("Second Order") <= estimation.get<double>("Order"))
+  const std::string method = estimation.get<std::string>("Method");
+  const bool fits = (method == CoarserMeshEstimate::kName || (method == "None" && adaptivityRequested(params))) &&
+                    estimation.get<int>("Coarser Levels") == 2;
+  if (fits && estimation.get<double>("Second Order") <= estimation.get<double>("Order"))
     throw InputError("Error Estimation/Second Order = " + std::to_string(estimation.get<double>("Second Order")) +
                      " must be larger than Error Estimation/Order = " + std::to_string(estimation.get<double>("Order")) +
                      " (the two terms of the error the Coarser Mesh estimate fits)");
@@ -248,10 +257,24 @@ void validateCase(ParameterList& params) {
   if (params.isSublist("Adaptivity"))
     validateSublist(params.sublist("Adaptivity"), valid.sublist("Adaptivity"), "Adaptivity");
   if (adaptivityRequested(params)) {
-    const auto targets = params.sublist("Adaptivity").get<Teuchos::Array<std::string>>("Responses");
-    if (targets.empty())
+    auto targets = params.sublist("Adaptivity").get<Teuchos::Array<std::string>>("Responses");
+    const auto derivatives = params.sublist("Adaptivity").get<Teuchos::Array<std::string>>("Sensitivities");
+    if (targets.empty() && derivatives.empty())
       throw InputError("Adaptivity/Responses: name at least one response (" + adaptivityTargets() +
                        ") to adapt the mesh to");
+    // A derivative target 'response/parameter': the parameter one the case differentiates by,
+    // the response a target itself (its indicators size the mesh).
+    const auto parameters = params.isSublist("Sensitivity")
+                                ? params.sublist("Sensitivity").get<Teuchos::Array<std::string>>("Parameters")
+                                : Teuchos::Array<std::string>();
+    for (const std::string& entry : derivatives) {
+      const std::size_t slash = entry.find('/');
+      const std::string parameter = slash == std::string::npos ? "" : entry.substr(slash + 1);
+      if (slash == std::string::npos || std::find(parameters.begin(), parameters.end(), parameter) == parameters.end())
+        throw InputError("Adaptivity/Sensitivities: '" + entry + "' must be 'response/parameter' with a parameter of "
+                         "Sensitivity/Parameters (the case gives: " + joined(parameters.toVector()) + ")");
+      targets.push_back(entry.substr(0, slash));
+    }
     // Only the responses linear in the reactions have an adjoint, hence indicators.
     const ParameterList& responses = params.sublist("Responses");
     for (const std::string& name : targets) {

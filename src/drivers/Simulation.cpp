@@ -93,7 +93,7 @@ void Simulation::estimateErrors(const std::vector<std::string>& indicatorRespons
     for (const auto& [parameter, eta] : byParameter)
       log() << "flowform: d" << name << "/d(" << parameter << ") through the free surfaces, estimated error " << eta
             << "\n";
-  log() << "flowform: error estimate on the refined mesh (" << m_estimate->refinedDofs << " dofs) in "
+  log() << "flowform: error estimate on the " << m_estimate->otherLevel << " mesh (" << m_estimate->refinedDofs << " dofs) in "
         << m_estimate->seconds << " s\n";
 }
 

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -36,6 +37,25 @@ std::vector<double> nodalSizes(const Mesh& mesh) {
   return sum;
 }
 
+/// What the loop adapts to: a response, or the derivative of one by a sensitivity parameter
+/// (sized by the response's indicators scaled to the derivative's estimate).
+struct Target {
+  std::string response, parameter;  ///< parameter empty: the response itself
+  std::string label() const { return parameter.empty() ? response : "d(" + response + ")/d(" + parameter + ")"; }
+  double value(const CaseRun& run) const {
+    return parameter.empty() ? run.functionals().at(response)
+                             : run.sensitivity().responseDerivatives().at(response).at(parameter);
+  }
+  /// η, or NaN when the estimate has none (no sensitivities on the other level).
+  double eta(const ErrorEstimate& estimate) const {
+    if (parameter.empty()) return estimate.functionals.at(response);
+    const auto byResponse = estimate.sensitivities.find(response);
+    if (byResponse == estimate.sensitivities.end() || !byResponse->second.count(parameter))
+      return std::numeric_limits<double>::quiet_NaN();
+    return byResponse->second.at(parameter);
+  }
+};
+
 constexpr double kLocalOrder = 2.0;  ///< s: a node's share of the estimate ∝ h^s (AdaptiveLoop.hpp)
 constexpr double kMinRatio = 1.0 / 32.0, kMaxRatio = 1.5;  ///< h'/h per cycle at most this much finer, coarser
 /// No size below this fraction of the first mesh's smallest: gmsh made a sliver (a zero-area
@@ -44,7 +64,7 @@ constexpr double kSmallestSize = 1.0 / 128.0;
 
 /// The sizes the next run's mesh should have, at the nodes of the mesh the indicators are on
 /// (AdaptiveLoop.hpp); that mesh (as made) is `on`.
-std::vector<double> nextSizes(const CaseRun& sim, const std::vector<std::string>& targets, double tolerance,
+std::vector<double> nextSizes(const CaseRun& sim, const std::vector<Target>& targets, double tolerance,
                               double minSize, double maxSize, double maxDofs, Mesh& on) {
   const ErrorEstimate& estimate = sim.errorEstimate();
   // The free surfaces' moves stretch this mesh and the next alike (carryShape maps the next mesh
@@ -54,14 +74,14 @@ std::vector<double> nextSizes(const CaseRun& sim, const std::vector<std::string>
   const double level = estimate.indicatorMesh ? 0.5 : 1.0;
   const Mesh& mesh = on;
   std::vector<double> e(mesh.numNodes(), 0.0);
-  for (const std::string& name : targets) {
-    const std::vector<double>& shares = estimate.indicators.at(name);
+  for (const Target& target : targets) {
+    const std::vector<double>& shares = estimate.indicators.at(target.response);
     double total = 0.0;
     for (double v : shares) total += v;
     if (total <= 0.0) continue;
     // Scaled so that the shares add up to |η_φ| / (tol |φ|).
-    const double scale = std::abs(estimate.functionals.at(name)) /
-                         (tolerance * std::max(std::abs(sim.functionals().at(name)), 1e-300) * total);
+    const double scale = std::abs(target.eta(estimate)) /
+                         (tolerance * std::max(std::abs(target.value(sim)), 1e-300) * total);
     for (GO n = 0; n < mesh.numNodes(); ++n) e[n] += scale * shares[n];
   }
   // Equidistribution at the least node count: with e_a' = e_a (h_a'/h_a)^s and N' = Σ (h_a/h_a')²,
@@ -91,8 +111,16 @@ std::vector<double> nextSizes(const CaseRun& sim, const std::vector<std::string>
 int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& makeRun, const std::string& outDir,
                 std::string* message) {
   const Teuchos::ParameterList& adaptivity = caseParams.sublist("Adaptivity");
-  const auto targetArray = adaptivity.get<Teuchos::Array<std::string>>("Responses");
-  const std::vector<std::string> targets(targetArray.begin(), targetArray.end());
+  std::vector<Target> targets;
+  std::vector<std::string> indicatorResponses;  // each target's response, once
+  for (const std::string& name : adaptivity.get<Teuchos::Array<std::string>>("Responses")) targets.push_back({name, ""});
+  for (const std::string& entry : adaptivity.get<Teuchos::Array<std::string>>("Sensitivities")) {
+    const std::size_t slash = entry.find('/');  // validateCase checked the form
+    targets.push_back({entry.substr(0, slash), entry.substr(slash + 1)});
+  }
+  for (const Target& target : targets)
+    if (std::find(indicatorResponses.begin(), indicatorResponses.end(), target.response) == indicatorResponses.end())
+      indicatorResponses.push_back(target.response);
   const double tolerance = adaptivity.get<double>("Target Relative Error");
   // The estimate's effectivity (estimate / true error) is measured in [0.7, 1.1] on the extrusion
   // (docs/theory.md §7): the loop stops when Safety Factor × the estimate meets the target, so
@@ -149,7 +177,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
                              : "cycle " + std::to_string(cycle) + ": the solve did not converge: " + sim->statusMessage();
       break;
     }
-    sim->estimateErrors(targets);
+    sim->estimateErrors(indicatorResponses);
     const ErrorEstimate& estimate = sim->errorEstimate();
     if (!estimate.estimated) {
       why = budgetWasSpent() ? budgetMessage()
@@ -166,12 +194,20 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
                             {"error_estimate", estimate.functionals},
                             {"error_estimation_method", estimate.method},
                             {"error_estimation_seconds", estimate.seconds}};
+    if (sim->sensitivity().computed()) entry["sensitivities"] = sim->sensitivity().responseDerivatives();
+    if (!estimate.sensitivities.empty()) entry["sensitivities_error_estimate"] = estimate.sensitivities;
     met = true;
-    for (const std::string& name : targets) {
-      const double relative = std::abs(estimate.functionals.at(name)) /
-                              std::max(std::abs(sim->functionals().at(name)), 1e-300);
-      entry["relative_error_estimate"][name] = relative;
-      log() << "adaptivity: cycle " << cycle << ": " << name << " = " << sim->functionals().at(name)
+    for (const Target& target : targets) {
+      const double eta = target.eta(estimate);
+      if (!std::isfinite(eta)) {  // a derivative the estimate did not reach
+        why = "cycle " + std::to_string(cycle) + ": no error estimate of " + target.label() + " (" + estimate.method +
+              " estimated no sensitivities)";
+        met = false;
+        break;
+      }
+      const double relative = std::abs(eta) / std::max(std::abs(target.value(*sim)), 1e-300);
+      entry["relative_error_estimate"][target.label()] = relative;
+      log() << "adaptivity: cycle " << cycle << ": " << target.label() << " = " << target.value(*sim)
             << ", estimated relative error " << relative << " (target " << tolerance << ", safety factor " << safety
             << ")\n";
       met = met && safety * relative <= tolerance;
@@ -179,7 +215,9 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
     entry["seconds"] = secondsSince(start);
     cycles.push_back(entry);
     const double resolution = sim->problem().parameters().sublist("Solver").get<double>("Absolute Residual Tolerance");
-    for (const std::string& name : targets) {
+    for (const Target& target : targets) {
+      if (!target.parameter.empty()) continue;  // a derivative may vanish (ν = 0 at a kink)
+      const std::string& name = target.response;
       const double value = sim->functionals().at(name);
       const auto refined = estimate.refinedFunctionals.find(name);
       const double fine = refined == estimate.refinedFunctionals.end() ? value : refined->second;
