@@ -32,8 +32,8 @@ import os
 from flowform_tools import launcher, summary
 
 WALLS = ("container", "die_face", "die_land")
-F_REF = {("plane", "0.0"): 3.30663, ("plane", "0.1"): 3.73469, ("plane", "0.3"): 4.3595,
-         ("axisym", "0.0"): 18.2239, ("axisym", "0.1"): 23.1183, ("axisym", "0.3"): 26.646}
+F_REF = {("plane", "0.0"): 3.30663, ("plane", "0.1"): 3.73325, ("plane", "0.3"): 4.3595,
+         ("axisym", "0.0"): 18.2239, ("axisym", "0.1"): 23.10283, ("axisym", "0.3"): 26.646}
 DFDNU_REF = {"plane": 4.4505, "axisym": 52.4114}
 SWELL_REF = 1.1865
 
