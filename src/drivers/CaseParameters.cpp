@@ -159,7 +159,7 @@ static void buildValidCaseParameters(const ValidList& valid) {
                  inRange(0.1, 10.0));
   ParameterList& adaptivity = valid->sublist(
       "Adaptivity", false,
-      "adaptive meshing to a requested accuracy (docs/theory.md §7): solve, estimate (Error Estimation/Method; Newton Step when None), size the next "
+      "adaptive meshing to a requested accuracy (docs/theory.md §7): solve, estimate (Error Estimation/Method; Coarser Mesh when None), size the next "
       "mesh from the indicators, remesh the .geo through gmsh, carry the solution and contact statuses over, "
       "solve again. No sublist: none of this runs");
   adaptivity.set("Enabled", true,

@@ -56,6 +56,7 @@ struct Target {
   }
 };
 
+constexpr double kMaxGrowth = 16.0;  ///< the next cycle's dofs at most this many times this one's
 constexpr double kLocalOrder = 2.0;  ///< s: a node's share of the estimate ∝ h^s (AdaptiveLoop.hpp)
 constexpr double kMinRatio = 1.0 / 32.0, kMaxRatio = 1.5;  ///< h'/h per cycle at most this much finer, coarser
 /// No size below this fraction of the first mesh's smallest: gmsh made a sliver (a zero-area
@@ -65,7 +66,7 @@ constexpr double kSmallestSize = 1.0 / 128.0;
 /// The sizes the next run's mesh should have, at the nodes of the mesh the indicators are on
 /// (AdaptiveLoop.hpp); that mesh (as made) is `on`.
 std::vector<double> nextSizes(const CaseRun& sim, const std::vector<Target>& targets, double tolerance,
-                              double minSize, double maxSize, double maxDofs, Mesh& on) {
+                              double minSize, double maxSize, double maxDofs, Mesh& on, double& predictedDofs) {
   const ErrorEstimate& estimate = sim.errorEstimate();
   // The free surfaces' moves stretch this mesh and the next alike (carryShape maps the next mesh
   // as it maps this one): the sizes are those of the mesh as made, where the next mesh is made.
@@ -99,9 +100,11 @@ std::vector<double> nextSizes(const CaseRun& sim, const std::vector<Target>& tar
     predictedNodes += (h[n] / next[n]) * (h[n] / next[n]);
   }
   const double dofsPerNode = 3.0;
-  if (dofsPerNode * predictedNodes > maxDofs) {
-    const double grow = std::sqrt(dofsPerNode * predictedNodes / maxDofs);
+  predictedDofs = dofsPerNode * predictedNodes;
+  if (predictedDofs > maxDofs) {
+    const double grow = std::sqrt(predictedDofs / maxDofs);
     for (double& v : next) v *= grow;
+    predictedDofs = maxDofs;
   }
   return next;
 }
@@ -136,12 +139,14 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
   Teuchos::ParameterList remeshed = caseParams;
   remeshed.sublist("Mesh").set("Size Factor", 1.0);
   // With the coarser-mesh estimate (CoarserMeshEstimate.hpp) each later cycle's mesh is the
-  // field's mesh at 2^L times the sizes refined L times (L = its Coarser Levels): the estimate's
-  // coarsest level is the field's mesh itself. Not with free surfaces (that estimate falls back
-  // to the two-level one there).
+  // field's mesh at 2^L times the sizes refined L times (L ≤ its Coarser Levels, fewer where the
+  // coarsest would have less than a quarter of the first mesh's dofs): the estimate's coarsest
+  // level is the field's mesh itself. Not with free surfaces (that estimate falls back to the
+  // two-level one there).
   const std::string method = caseParams.sublist("Error Estimation").get<std::string>("Method");
   const bool nested = (method == "None" ? estimationMethods().front().name : method) == CoarserMeshEstimate::kName;
-  int nestLevels = 0;  // the field's mesh refined this often is the next cycle's
+  int levelsAllowed = 0;  // Coarser Levels, when the loop nests its meshes
+  double firstDofs = 0.0;
   std::unique_ptr<CaseRun> sim, previous;
   SizeField field;
   double minSize = 0.0, maxSize = 0.0;
@@ -165,8 +170,8 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
       maxSize = *std::max_element(h.begin(), h.end());
       minSize = kSmallestSize * *std::min_element(h.begin(), h.end());
       if (nested && sim->problem().freeSurfaces().empty())
-        nestLevels = caseParams.sublist("Error Estimation").get<int>("Coarser Levels");
-      remeshed.sublist("Mesh").set("Uniform Refinements", nestLevels);
+        levelsAllowed = caseParams.sublist("Error Estimation").get<int>("Coarser Levels");
+      firstDofs = static_cast<double>(sim->problem().dofMap().numGlobalDofs());
     }
     if (previous) sim->problem().startFrom(previous->problem());
     sim->deferFiniteDifferenceCheck();  // only the last cycle's sensitivities are checked
@@ -244,9 +249,20 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
       break;
     }
     // On the mesh as made: a free-surface update moved boundary nodes off the .geo's curves.
+    // The floor is gmsh's (the coarsest level's sizes): uniform refinement below it makes no sliver.
     Mesh on;
-    std::vector<double> sizes = nextSizes(*sim, targets, tolerance / safety, minSize, maxSize, maxDofs, on);
-    for (double& v : sizes) v *= std::pow(2.0, nestLevels);  // the coarsest level's sizes
+    double predictedDofs = 0.0;
+    // At most kMaxGrowth times this cycle's dofs: an estimate far off (a contact zone that jumped
+    // between the levels) would otherwise ask for a mesh the loop cannot afford.
+    const double dofs = static_cast<double>(sim->problem().dofMap().numGlobalDofs());
+    std::vector<double> sizes = nextSizes(*sim, targets, tolerance / safety, minSize / std::pow(2.0, levelsAllowed),
+                                          maxSize, std::min(maxDofs, kMaxGrowth * dofs), on, predictedDofs);
+    // As many levels as keep the coarsest at a quarter of the first mesh's dofs at least: coarser
+    // than that, the levels' fit sees no asymptotic error (ν = 1: 250 dofs gave η = 52 % of F).
+    int levels = levelsAllowed;
+    while (levels > 0 && predictedDofs / std::pow(4.0, levels) < 0.25 * firstDofs) --levels;
+    remeshed.sublist("Mesh").set("Uniform Refinements", levels);
+    for (double& v : sizes) v = std::max(v * std::pow(2.0, levels), minSize);  // the coarsest level's sizes
     field = sizeFieldOnMesh(on, sizes);
     previous = std::move(sim);
   }

@@ -2,7 +2,7 @@
 //
 // Cycle k: solve on mesh k (cycle 0: the case's own mesh; later ones start from the previous
 // cycle's solution and contact statuses, interpolated: no continuation), estimate every response's
-// error (Error Estimation/Method, Newton Step when None: EstimationMethods.hpp) with nodal
+// error (Error Estimation/Method, Coarser Mesh when None: EstimationMethods.hpp) with nodal
 // indicators for the target responses, stop when every target has |η|/|φ| ≤ Target Relative Error,
 // else size mesh k+1 from the indicators and let gmsh mesh the .geo anew with that size field
 // (curves and physical groups exact). The case's Mesh/Uniform Refinements and Size Factor shape the
@@ -16,10 +16,14 @@
 // nodes N' = Σ_a (h_a/h_a')² are
 //     h_a'/h_a = (λ/e_a)^(1/(s+2)),   λ^(s/(s+2)) = ½ / Σ_a e_a^(2/(s+2)),
 // with s = 2 (a share falls like its area where the solution is smooth, more slowly at a
-// singular corner, which the next cycles then refine further), clamped to [1/8, 3/2] per
-// cycle. h_a' is capped by the largest size of the first mesh, floored at 1/128 of its smallest
-// (finer sizes made gmsh leave a zero-area cell at the die lip), and scaled up uniformly when
-// the predicted dof count Σ_a 3 (h_a/h_a')² exceeds Maximum Dofs.
+// singular corner, which the next cycles then refine further), clamped to [1/32, 3/2] per
+// cycle. h_a' is capped by the largest size of the first mesh, the sizes gmsh meshes with are
+// floored at 1/128 of its smallest (finer sizes made gmsh leave a zero-area cell at the die
+// lip; the uniform refinements of the Coarser Mesh estimate's levels go below), and all are
+// scaled up uniformly when the predicted dof count Σ_a 3 (h_a/h_a')² exceeds Maximum Dofs or
+// 16 times the cycle's dofs. With the Coarser Mesh estimate the next mesh is the field's at
+// 2^L times the sizes refined L times (L ≤ Coarser Levels, the coarsest level keeping a quarter
+// of the first mesh's dofs).
 #pragma once
 
 #include <string>
