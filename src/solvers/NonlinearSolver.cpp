@@ -189,13 +189,83 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, const
   return report;
 }
 
+bool NonlinearSolver::reusedFactorSolve(Vector& x, const FlowPhysics& physics, int& steps, double& residualNorm,
+                                        double& referenceNorm) {
+  steps = 0;
+  m_model.setPhysics(physics);
+  // The penalty scales from the start, as the Newton solve below would take them.
+  if (m_beforeNewton) m_beforeNewton(x);
+  const double atol = m_params.get<double>("Absolute Residual Tolerance");
+  const double rtol = m_params.get<double>("Relative Residual Tolerance");
+  const double utol = m_params.get<double>("Update Tolerance");
+  const Vector start(x, Teuchos::Copy);
+  Vector f(x.getMap()), dx(x.getMap());
+  m_model.residual(x, f);
+  const double normF0 = f.norm2();
+  double normF = normF0;
+  residualNorm = referenceNorm = normF;
+  if (normF0 <= atol) return true;  // Newton's test at its start
+  while (steps < kMaxReusedSteps && !budgetSpent()) {
+    m_model.solve(f, dx);
+    x.update(-1.0, dx, 1.0);
+    ++steps;
+    const double previous = normF;
+    m_model.residual(x, f);
+    normF = f.norm2();
+    const double normDx = dx.norm2(), normX = x.norm2();
+    log() << "    reused factors " << std::setw(2) << steps << "  |F| = " << std::scientific << std::setprecision(3)
+          << normF << "  |dx| = " << normDx << std::defaultfloat << "\n";
+    if (!std::isfinite(normF)) break;
+    const bool contracted = normF <= kReuseContraction * previous;
+    // Newton's tests (ResidualAndStepTest), the step bounding the remaining error only when the
+    // iteration contracts (or ||F|| is at its absolute floor).
+    if ((normF <= atol || normF <= rtol * normF0) && normDx <= utol * (normX + utol) && (contracted || normF <= atol)) {
+      residualNorm = normF;
+      return true;
+    }
+    if (!contracted) break;
+  }
+  // Not converged: x keeps the last iterate when it lowered ||F|| (Newton continues from there),
+  // the start otherwise.
+  if (std::isfinite(normF) && normF < normF0) {
+    residualNorm = normF;
+  } else {
+    Tpetra::deep_copy(x, start);
+    residualNorm = normF0;
+  }
+  referenceNorm = normF0;
+  return false;
+}
+
 SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const NewtonOptions& options) {
   if (isNewtonian(target.material)) return solve(x, target);
   Vector start(x, Teuchos::Copy);
-  StageReport sr = newton(x, target, options);
+  int reused = 0;
+  NewtonOptions newtonOptions = options;
+  if (options.reuseFactors && !options.continuing && options.looseTolerance <= 0.0 && options.maxIterations <= 0 &&
+      m_model.hasFactors()) {
+    double normF = 0.0, normF0 = 0.0;
+    const bool converged = reusedFactorSolve(x, target, reused, normF, normF0);
+    if (converged) {
+      SolveReport report;
+      report.converged = true;
+      report.newtonIterations = report.reusedFactorSteps = reused;
+      report.residualNorm = normF;
+      return report;
+    }
+    log() << "    reused factors: contraction too slow; Newton from " << (normF < normF0 ? "there" : "the start")
+          << "\n";
+    // Newton continues at the penalty scales the start gave, its relative tolerance on the
+    // start's ||F||, with a new linearization.
+    m_model.restartLinearization();
+    newtonOptions.continuing = true;
+    newtonOptions.referenceResidual = normF0;
+  }
+  StageReport sr = newton(x, target, newtonOptions);
   SolveReport report;
+  report.reusedFactorSteps = reused;
   report.stages.push_back(sr);
-  report.newtonIterations = sr.newtonIterations;
+  report.newtonIterations = reused + sr.newtonIterations;
   report.residualNorm = sr.residualNorm;
   report.converged = sr.converged;
   report.stoppedAtCap = sr.stoppedAtCap;
