@@ -189,22 +189,27 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, const
   return report;
 }
 
-bool NonlinearSolver::reusedFactorSolve(Vector& x, const FlowPhysics& physics, int& steps, double& residualNorm,
-                                        double& referenceNorm) {
-  steps = 0;
+bool NonlinearSolver::reusedFactorSolve(Vector& x, const FlowPhysics& physics, const NewtonOptions& options,
+                                        StageReport& stage, int& attempted) {
   m_model.setPhysics(physics);
-  // The penalty scales from the start, as the Newton solve below would take them.
-  if (m_beforeNewton) m_beforeNewton(x);
+  // A solve of its own takes the penalty scales from its start, as Newton would.
+  if (!options.continuing && m_beforeNewton) m_beforeNewton(x);
   const double atol = m_params.get<double>("Absolute Residual Tolerance");
   const double rtol = m_params.get<double>("Relative Residual Tolerance");
   const double utol = m_params.get<double>("Update Tolerance");
-  const Vector start(x, Teuchos::Copy);
   Vector f(x.getMap()), dx(x.getMap());
   m_model.residual(x, f);
-  const double normF0 = f.norm2();
-  double normF = normF0;
-  residualNorm = referenceNorm = normF;
-  if (normF0 <= atol) return true;  // Newton's test at its start
+  double normF = f.norm2();
+  attempted = 0;
+  stage = StageReport{rateExponent(physics.material), physics.material.cutoff, 0, false, normF};
+  stage.startResidualNorm = normF;
+  stage.initialResidualNorm = options.referenceResidual > 0.0 ? options.referenceResidual : normF;
+  if (normF <= atol) {  // Newton's test at its start
+    stage.converged = true;
+    return true;
+  }
+  int steps = 0;
+  Vector last(x, Teuchos::Copy);  // the last contracting iterate (the start at first)
   while (steps < kMaxReusedSteps && !budgetSpent()) {
     m_model.solve(f, dx);
     x.update(-1.0, dx, 1.0);
@@ -215,25 +220,24 @@ bool NonlinearSolver::reusedFactorSolve(Vector& x, const FlowPhysics& physics, i
     const double normDx = dx.norm2(), normX = x.norm2();
     log() << "    reused factors " << std::setw(2) << steps << "  |F| = " << std::scientific << std::setprecision(3)
           << normF << "  |dx| = " << normDx << std::defaultfloat << "\n";
-    if (!std::isfinite(normF)) break;
-    const bool contracted = normF <= kReuseContraction * previous;
-    // Newton's tests (ResidualAndStepTest), the step bounding the remaining error only when the
+    const bool contracted = std::isfinite(normF) && normF <= kReuseContraction * previous;
+    if (!contracted && !(normF <= atol)) {
+      Tpetra::deep_copy(x, last);
+      break;
+    }
+    Tpetra::deep_copy(last, x);
+    stage.newtonIterations = steps;
+    stage.residualNorm = normF;
+    // Newton's tests (ResidualAndStepTest), the step bounding the remaining error as the
     // iteration contracts (or ||F|| is at its absolute floor).
-    if ((normF <= atol || normF <= rtol * normF0) && normDx <= utol * (normX + utol) && (contracted || normF <= atol)) {
-      residualNorm = normF;
+    if ((normF <= atol || normF <= rtol * stage.initialResidualNorm) && normDx <= utol * (normX + utol)) {
+      stage.converged = true;
+      attempted = steps;
       return true;
     }
-    if (!contracted) break;
   }
-  // Not converged: x keeps the last iterate when it lowered ||F|| (Newton continues from there),
-  // the start otherwise.
-  if (std::isfinite(normF) && normF < normF0) {
-    residualNorm = normF;
-  } else {
-    Tpetra::deep_copy(x, start);
-    residualNorm = normF0;
-  }
-  referenceNorm = normF0;
+  // Not converged: x is the last contracting iterate (Newton continues from there), or the start.
+  attempted = steps;
   return false;
 }
 
@@ -242,24 +246,23 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
   Vector start(x, Teuchos::Copy);
   int reused = 0;
   NewtonOptions newtonOptions = options;
-  if (options.reuseFactors && !options.continuing && options.looseTolerance <= 0.0 && options.maxIterations <= 0 &&
-      m_model.hasFactors()) {
-    double normF = 0.0, normF0 = 0.0;
-    const bool converged = reusedFactorSolve(x, target, reused, normF, normF0);
-    if (converged) {
+  if (options.reuseFactors && options.looseTolerance <= 0.0 && options.maxIterations <= 0 && m_model.hasFactors()) {
+    StageReport chord;
+    if (reusedFactorSolve(x, target, options, chord, reused)) {
       SolveReport report;
       report.converged = true;
+      report.stages.push_back(chord);
       report.newtonIterations = report.reusedFactorSteps = reused;
-      report.residualNorm = normF;
+      report.residualNorm = chord.residualNorm;
       return report;
     }
-    log() << "    reused factors: contraction too slow; Newton from " << (normF < normF0 ? "there" : "the start")
-          << "\n";
-    // Newton continues at the penalty scales the start gave, its relative tolerance on the
+    log() << "    reused factors: not converged; Newton from "
+          << (chord.newtonIterations > 0 ? "the last contracting iterate" : "the start") << "\n";
+    // Newton continues at the penalty scales of the start, its relative tolerance on the
     // start's ||F||, with a new linearization.
     m_model.restartLinearization();
     newtonOptions.continuing = true;
-    newtonOptions.referenceResidual = normF0;
+    newtonOptions.referenceResidual = chord.initialResidualNorm;
   }
   StageReport sr = newton(x, target, newtonOptions);
   SolveReport report;

@@ -52,7 +52,8 @@ struct NewtonOptions {
   /// resolve(): false: a Newton that fails is reported as failed, with no restart from the
   /// predictor (the caller has a better fallback).
   bool restart = true;
-  /// resolve(): first try the simplified Newton iteration with the factors the model holds
+  /// resolve() of an uncapped, tight solve: first try the simplified Newton iteration with the
+  /// factors the model holds
   /// (an earlier Jacobian's: the state before a small change such as a free-surface move),
   /// x ← x − J_old⁻¹ F(x), while each step at least halves ||F||, to the same tolerances; else
   /// Newton goes on from its last iterate (from the start if that did not lower ||F||), at the
@@ -113,11 +114,11 @@ class NonlinearSolver {
   /// One Newton solve at the model's current physics; returns iterations, sets converged.
   StageReport newton(Vector& x, const FlowPhysics& physics, const NewtonOptions& options = {});
   /// NewtonOptions::reuseFactors: the simplified Newton iteration from x with the model's
-  /// factors; true when it converged (x is the solution); false with x its last iterate if that
-  /// lowered ||F||, else the start. `steps`: the steps taken; `residualNorm`: ||F|| at the
-  /// returned x; `referenceNorm`: ||F|| at the start.
-  bool reusedFactorSolve(Vector& x, const FlowPhysics& physics, int& steps, double& residualNorm,
-                         double& referenceNorm);
+  /// factors, at most kMaxReusedSteps steps, each to halve ||F||. true when it met Newton's tests
+  /// (x the solution); false with x its last contracting iterate (the start if none). `stage`:
+  /// how far it got; `attempted`: the steps taken, a last one that did not contract included.
+  bool reusedFactorSolve(Vector& x, const FlowPhysics& physics, const NewtonOptions& options, StageReport& stage,
+                         int& attempted);
   /// A simplified Newton step must multiply ||F|| by at most this: the remaining error is then
   /// below the last step (a geometric series of ratio ≤ 1/2), as for the update test of Newton.
   static constexpr double kReuseContraction = 0.5;
