@@ -52,12 +52,12 @@ struct NewtonOptions {
   /// resolve(): false: a Newton that fails is reported as failed, with no restart from the
   /// predictor (the caller has a better fallback).
   bool restart = true;
-  /// resolve() of an uncapped, tight solve: first try the simplified Newton iteration with the
-  /// factors the model holds
-  /// (an earlier Jacobian's: the state before a small change such as a free-surface move),
-  /// x ← x − J_old⁻¹ F(x), while each step at least halves ||F||, to the same tolerances; else
-  /// Newton goes on from its last iterate (from the start if that did not lower ||F||), at the
-  /// penalty scales of the start. No Jacobian assembly or factorization when it converges.
+  /// resolve() of an uncapped, tight solve: first the simplified Newton iteration with the
+  /// factors the model holds (an earlier Jacobian's: the state before a small change such as a
+  /// free-surface move), x ← x − J_old⁻¹ F(x), while each step at least halves ||F||, to the same
+  /// tolerances; else Newton goes on from its last contracting iterate (the start if none), at
+  /// the penalty scales of the start, with a new linearization (the duals restart). No Jacobian
+  /// assembly or factorization when it converges (docs/theory.md §8).
   bool reuseFactors = false;
 };
 
