@@ -168,7 +168,11 @@ FreeSurfaceReport Problem::convergeFreeSurfaces(NonlinearSolver& solver, Vector&
     // Each shape is a new contact problem: the per-node change counts start again (the loop's
     // own cap stops a shape and a status that chase each other).
     for (ContactWall& wall : m_walls) wall.resetChangeCounts();
-    SolveReport r = solver.resolve(x, physics);
+    // The last factors are the Jacobian's before the move: after a small move their simplified
+    // Newton iteration converges without a new factorization (NewtonOptions::reuseFactors).
+    NewtonOptions options;
+    options.reuseFactors = true;
+    SolveReport r = solver.resolve(x, physics, options);
     if (r.converged && !m_walls.empty()) changes = m_statusLoop->run(solver, x, physics, m_walls, r);
     newton = r.newtonIterations;
     why = r.message;

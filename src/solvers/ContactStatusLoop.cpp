@@ -120,6 +120,10 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
   // Newton from x, recorded in the report. `options.continuing`: the same re-solve goes on
   // (its iterations add to the last entry of newtonPerSolve).
   auto resolve = [&](NewtonOptions options) {
+    // A re-solve converged to the tolerances tries the last factors first (NewtonOptions::
+    // reuseFactors). An iterate is read only after a Newton step: a simplified step that halves
+    // ||F|| bounds nothing (the old factors may not see the change, and its step is then small).
+    options.reuseFactors = options.maxIterations <= 0 && options.looseTolerance <= 0.0;
     const Vector before(x, Teuchos::Copy);
     if (options.continuing) options.referenceResidual = reference;
     const SolveReport again = solver.resolve(x, physics, options);

@@ -19,9 +19,9 @@ void FlowModel::assembleJacobian(const Vector& x) {
 }
 
 void FlowModel::factorJacobian() {
-  m_jacobianValid = false;
+  m_jacobianValid = m_hasFactors = false;
   m_linearSolver->factor(m_jacobian);
-  m_jacobianValid = true;
+  m_jacobianValid = m_hasFactors = true;
 }
 
 }  // namespace flowform

@@ -57,6 +57,9 @@ class FlowModel {
   /// Forgets the factorization (the physics changed, so J no longer matches).
   void invalidateJacobian() { m_jacobianValid = false; }
   bool hasJacobian() const { return m_jacobianValid; }
+  /// Whether the linear solver holds the factors of some earlier Jacobian of this model (they
+  /// may no longer match: another x, mesh or physics), which solve() applies.
+  bool hasFactors() const { return m_hasFactors; }
   /// The x at which the current Jacobian and its factors were computed (null before the
   /// first). After NOX converges this is the previous iterate, not the converged x.
   Teuchos::RCP<const Vector> jacobianPoint() const { return m_jacobianPoint; }
@@ -72,6 +75,7 @@ class FlowModel {
   Teuchos::RCP<Vector> m_jacobianPoint;
   std::unique_ptr<LinearSolver> m_linearSolver;
   bool m_jacobianValid = false;
+  bool m_hasFactors = false;
   bool m_useDual = false;
   NewtonDual m_dual;
   int m_numResiduals = 0;

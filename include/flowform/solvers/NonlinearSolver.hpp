@@ -52,6 +52,13 @@ struct NewtonOptions {
   /// resolve(): false: a Newton that fails is reported as failed, with no restart from the
   /// predictor (the caller has a better fallback).
   bool restart = true;
+  /// resolve() of an uncapped, tight solve: first the simplified Newton iteration with the
+  /// factors the model holds (an earlier Jacobian's: the state before a small change such as a
+  /// free-surface move), x ← x − J_old⁻¹ F(x), while each step at least halves ||F||, to the same
+  /// tolerances; else Newton goes on from its last contracting iterate (the start if none), at
+  /// the penalty scales of the start, with a new linearization (the duals restart). No Jacobian
+  /// assembly or factorization when it converges (docs/theory.md §8).
+  bool reuseFactors = false;
 };
 
 struct SolveReport {
@@ -66,6 +73,8 @@ struct SolveReport {
   /// after a contact status change (ContactStatusLoop).
   std::vector<int> newtonPerSolve;
   int restarts = 0;  ///< re-solves that failed and started again from the predictor
+  /// Of newtonIterations: simplified Newton steps with earlier factors (NewtonOptions::reuseFactors).
+  int reusedFactorSteps = 0;
   bool stoppedAtCap = false;  ///< a resolve() that stopped at NewtonOptions::maxIterations
   /// Contact nodes left cycling between active and free by a status loop that tolerates them
   /// (ContactStatusLoop::tolerateCycling: while free surfaces move); 0 otherwise.
@@ -104,6 +113,16 @@ class NonlinearSolver {
  private:
   /// One Newton solve at the model's current physics; returns iterations, sets converged.
   StageReport newton(Vector& x, const FlowPhysics& physics, const NewtonOptions& options = {});
+  /// NewtonOptions::reuseFactors: the simplified Newton iteration from x with the model's
+  /// factors, at most kMaxReusedSteps steps, each to halve ||F||. true when it met Newton's tests
+  /// (x the solution); false with x its last contracting iterate (the start if none). `stage`:
+  /// how far it got; `attempted`: the steps taken, a last one that did not contract included.
+  bool reusedFactorSolve(Vector& x, const FlowPhysics& physics, const NewtonOptions& options, StageReport& stage,
+                         int& attempted);
+  /// A simplified Newton step must multiply ||F|| by at most this: the remaining error is then
+  /// below the last step (a geometric series of ratio ≤ 1/2), as for the update test of Newton.
+  static constexpr double kReuseContraction = 0.5;
+  static constexpr int kMaxReusedSteps = 25;
   /// x += −J⁻¹ F(x): exact for a linear problem.
   double linearSolve(Vector& x, const FlowPhysics& physics);
 
