@@ -22,8 +22,8 @@
 // lip; the uniform refinements of the Coarser Mesh estimate's levels go below), and all are
 // scaled up uniformly when the predicted dof count Σ_a 3 (h_a/h_a')² exceeds Maximum Dofs or
 // 16 times the cycle's dofs. With the Coarser Mesh estimate the next mesh is the field's at
-// 2^L times the sizes refined L times (L ≤ Coarser Levels, the coarsest level keeping a quarter
-// of the first mesh's dofs).
+// 2^L times the sizes refined L = Coarser Levels times when the coarsest level keeps a quarter
+// of the first mesh's dofs, else it is not nested (L = 0: the Newton Step estimate).
 #pragma once
 
 #include <string>
