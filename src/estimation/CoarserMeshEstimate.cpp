@@ -47,12 +47,7 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
   const int levels = std::min(settings.get<int>("Coarser Levels"), refinements);
   std::vector<std::unique_ptr<CaseRun>> coarser;
   for (int level = 1; level <= levels; ++level) {
-    Teuchos::ParameterList params = fine.parameters();
-    params.sublist("Mesh").set("Uniform Refinements", refinements - level);
-    params.sublist("Error Estimation").set("Method", "None");
-    if (params.isSublist("Adaptivity")) params.remove("Adaptivity");
-    if (params.isSublist("Sensitivity")) params.sublist("Sensitivity").set("Finite Difference Check", false);
-    coarser.push_back(makeRun(params, &fine.sizeField()));
+    coarser.push_back(makeLevelRun(fine, refinements - level, makeRun));
     Problem& problem = coarser.back()->problem();
     const std::string name = "level_" + std::to_string(level);
     lap(name + "_setup");

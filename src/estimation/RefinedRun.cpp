@@ -10,14 +10,17 @@
 
 namespace flowform {
 
-std::unique_ptr<CaseRun> makeRefinedRun(const Problem& coarse, const CaseRunFactory& makeRun) {
-  Teuchos::ParameterList params = coarse.parameters();
-  Teuchos::ParameterList& mesh = params.sublist("Mesh");
-  mesh.set("Uniform Refinements", mesh.get<int>("Uniform Refinements") + 1);
+std::unique_ptr<CaseRun> makeLevelRun(const Problem& run, int refinements, const CaseRunFactory& makeRun) {
+  Teuchos::ParameterList params = run.parameters();
+  params.sublist("Mesh").set("Uniform Refinements", refinements);
   params.sublist("Error Estimation").set("Method", "None");
   if (params.isSublist("Adaptivity")) params.remove("Adaptivity");
   if (params.isSublist("Sensitivity")) params.sublist("Sensitivity").set("Finite Difference Check", false);
-  return makeRun(params, &coarse.sizeField());
+  return makeRun(params, &run.sizeField());
+}
+
+std::unique_ptr<CaseRun> makeRefinedRun(const Problem& coarse, const CaseRunFactory& makeRun) {
+  return makeLevelRun(coarse, coarse.parameters().sublist("Mesh").get<int>("Uniform Refinements") + 1, makeRun);
 }
 
 std::vector<double> coarseIndicator(const Problem& coarse, const Problem& fine, const Vector& residual,

@@ -13,6 +13,11 @@
 
 namespace flowform {
 
+/// The case of `run` on the mesh its size field makes, refined `refinements` times (Mesh/Uniform
+/// Refinements), without estimate, adaptivity or finite-difference check, made by `makeRun`:
+/// a level of the estimates.
+std::unique_ptr<CaseRun> makeLevelRun(const Problem& run, int refinements, const CaseRunFactory& makeRun);
+
 /// The case of `coarse` on its mesh refined once more (Mesh/Uniform Refinements + 1, the coarse
 /// size field), without estimate, adaptivity or finite-difference check, made by `makeRun`.
 std::unique_ptr<CaseRun> makeRefinedRun(const Problem& coarse, const CaseRunFactory& makeRun);
