@@ -75,10 +75,11 @@ const SolveReport& Simulation::run() {
   return report;
 }
 
-void Simulation::estimateErrors(const std::vector<std::string>& indicatorResponses) {
+void Simulation::estimateErrors(const std::vector<std::string>& indicatorResponses, const IndicatorsWanted& wanted) {
   // The case's method; the adaptive loop asks with Method = None too: then the registry's first.
   const int method = estimationMethodIndex(parameters().sublist("Error Estimation").get<std::string>("Method"));
-  *m_estimate = flowform::estimateErrors(method < 0 ? 0 : method, *this, factory(m_baseDir, m_comm), indicatorResponses);
+  *m_estimate = flowform::estimateErrors(method < 0 ? 0 : method, *this, factory(m_baseDir, m_comm), indicatorResponses,
+                                          wanted);
   if (!m_estimate->failure.empty()) {
     log() << "flowform: NO ERROR ESTIMATE: " << m_estimate->failure << "\n";
     return;

@@ -182,7 +182,15 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
                              : "cycle " + std::to_string(cycle) + ": the solve did not converge: " + sim->statusMessage();
       break;
     }
-    sim->estimateErrors(indicatorResponses);
+    // The indicators only size a next cycle: none after one that meets the target, or the last.
+    sim->estimateErrors(indicatorResponses, [&](const ErrorEstimate& e) {
+      if (cycle + 1 == maxCycles) return false;
+      for (const Target& target : targets) {
+        const double eta = target.eta(e);
+        if (!std::isfinite(eta) || safety * std::abs(eta) > tolerance * std::abs(target.value(*sim))) return true;
+      }
+      return false;
+    });
     const ErrorEstimate& estimate = sim->errorEstimate();
     if (!estimate.estimated) {
       why = budgetWasSpent() ? budgetMessage()

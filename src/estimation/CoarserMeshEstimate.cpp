@@ -16,7 +16,8 @@
 namespace flowform {
 
 ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& makeRun,
-                                            const std::vector<std::string>& indicatorResponses) {
+                                            const std::vector<std::string>& indicatorResponses,
+                                            const IndicatorsWanted& wanted) {
   const auto start = std::chrono::steady_clock::now();
   Problem& fine = run.problem();
   const int refinements = fine.parameters().sublist("Mesh").get<int>("Uniform Refinements");
@@ -25,8 +26,8 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
                                                       "Newton Step estimate"
                                                     : "free surfaces: the two-level estimate")
           << " instead of the coarser mesh's\n";
-    ErrorEstimate other = refinements < 1 ? NewtonStepEstimate::estimate(run, makeRun, indicatorResponses)
-                                          : TwoLevelEstimate::estimate(run, makeRun, indicatorResponses);
+    ErrorEstimate other = refinements < 1 ? NewtonStepEstimate::estimate(run, makeRun, indicatorResponses, wanted)
+                                          : TwoLevelEstimate::estimate(run, makeRun, indicatorResponses, wanted);
     other.details["coarser_mesh_fallback"] = 1.0;
     return other;
   }
@@ -98,7 +99,7 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
     }
   }
 
-  if (!indicatorResponses.empty()) {
+  if (!indicatorResponses.empty() && (!wanted || wanted(estimate))) {
     Vector interpolated(fine.dofMap().ownedMap()), residual(fine.dofMap().ownedMap()), zeta(fine.dofMap().ownedMap());
     interpolate(coarse.mesh(), coarse.dofMap(), replicate(coarse.solution(), coarse.dofMap()), fine.mesh(),
                 fine.dofMap(), interpolated);

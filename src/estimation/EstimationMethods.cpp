@@ -21,10 +21,10 @@ const std::vector<EstimationMethodInfo>& estimationMethods() {
 int estimationMethodIndex(const std::string& name) { return indexByName(estimationMethods(), name); }
 
 ErrorEstimate estimateErrors(int method, CaseRun& coarse, const CaseRunFactory& makeRun,
-                             const std::vector<std::string>& indicatorResponses) {
+                             const std::vector<std::string>& indicatorResponses, const IndicatorsWanted& wanted) {
   ErrorEstimate estimate;
   if (!visitByIndex(RegisteredEstimationMethods{}, method, [&](auto tag) {
-        estimate = decltype(tag)::type::estimate(coarse, makeRun, indicatorResponses);
+        estimate = decltype(tag)::type::estimate(coarse, makeRun, indicatorResponses, wanted);
       }))
     throw std::logic_error("no error-estimate method of index " + std::to_string(method));
   return estimate;

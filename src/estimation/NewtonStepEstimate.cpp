@@ -15,7 +15,8 @@
 namespace flowform {
 
 ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseRunFactory& makeRun,
-                                           const std::vector<std::string>& indicatorResponses) {
+                                           const std::vector<std::string>& indicatorResponses,
+                                       const IndicatorsWanted& /*wanted: the indicators are made before the estimate*/) {
   const auto start = std::chrono::steady_clock::now();
   ErrorEstimate estimate;
   estimate.method = kName;

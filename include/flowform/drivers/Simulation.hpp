@@ -60,7 +60,8 @@ class Simulation final : public CaseRun {
   /// None: estimation/EstimationMethods.hpp), with nodal indicators for
   /// `indicatorResponses` (the adaptive loop's targets). run() calls it when the case's
   /// Error Estimation/Method asks.
-  void estimateErrors(const std::vector<std::string>& indicatorResponses = {}) override;
+  void estimateErrors(const std::vector<std::string>& indicatorResponses = {},
+                      const IndicatorsWanted& wanted = {}) override;
   /// The run met its numbers but not what was asked of it (the adaptive loop's target): exit
   /// status 3 with `why` as the summary's message.
   void setNotMet(const std::string& why) override { m_notMet = why; }

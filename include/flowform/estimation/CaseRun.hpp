@@ -43,8 +43,10 @@ class CaseRun {
   /// The error estimate of the responses (its `estimated` false when none was made).
   virtual const ErrorEstimate& errorEstimate() const = 0;
 
-  /// Estimates the responses' errors now, with nodal indicators for `indicatorResponses`.
-  virtual void estimateErrors(const std::vector<std::string>& indicatorResponses = {}) = 0;
+  /// Estimates the responses' errors now, with nodal indicators for `indicatorResponses` (a
+  /// method that can decide after the estimate asks `wanted` first).
+  virtual void estimateErrors(const std::vector<std::string>& indicatorResponses = {},
+                              const IndicatorsWanted& wanted = {}) = 0;
   /// run() computes the DDM sensitivities but leaves their finite-difference check to a later
   /// checkSensitivities().
   virtual void deferFiniteDifferenceCheck() = 0;

@@ -47,8 +47,10 @@ struct CoarserMeshEstimate {
   /// indicators for `indicatorResponses` on the coarser mesh. `run`'s model is refactored for
   /// the indicators (its solution and statuses are kept). When the coarser solve does not
   /// converge there is no estimate (`failure` says why). Collective.
+  /// The indicators are made after the estimate, only when `wanted` (empty: always) says so.
   static ErrorEstimate estimate(CaseRun& run, const CaseRunFactory& makeRun,
-                                const std::vector<std::string>& indicatorResponses);
+                                const std::vector<std::string>& indicatorResponses,
+                                const IndicatorsWanted& wanted = {});
 };
 
 }  // namespace flowform

@@ -2,6 +2,7 @@
 // made: NewtonStepEstimate.hpp, TwoLevelEstimate.hpp).
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -13,6 +14,11 @@
 #include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
+
+struct ErrorEstimate;
+/// Whether the indicators are wanted, given the estimate without them (the adaptive loop: not
+/// when the estimate meets the target). Empty: always.
+using IndicatorsWanted = std::function<bool(const ErrorEstimate&)>;
 
 struct ErrorEstimate {
   bool estimated = false;

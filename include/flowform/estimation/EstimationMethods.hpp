@@ -1,6 +1,6 @@
 // The registry of error-estimate methods (Error Estimation/Method): the one list a new method is
 // added to. A method is one file in estimation/ (a struct like NewtonStepEstimate: kName,
-// kDescription and a static estimate(run, run factory, indicator responses)) and one entry
+// kDescription and a static estimate(run, run factory, indicator responses, whether they are wanted)) and one entry
 // in RegisteredEstimationMethods below; the Method choices, their description and the dispatch
 // follow from the list.
 #pragma once
@@ -29,6 +29,6 @@ int estimationMethodIndex(const std::string& name);
 /// The estimate of `coarse`'s responses by method `method` (an index of estimationMethods()); a
 /// method may refactor `coarse`'s model (CoarserMeshEstimate), its solution stays.
 ErrorEstimate estimateErrors(int method, CaseRun& coarse, const CaseRunFactory& makeRun,
-                             const std::vector<std::string>& indicatorResponses);
+                             const std::vector<std::string>& indicatorResponses, const IndicatorsWanted& wanted = {});
 
 }  // namespace flowform

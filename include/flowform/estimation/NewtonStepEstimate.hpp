@@ -56,7 +56,8 @@ struct NewtonStepEstimate {
   /// indicators for `indicatorResponses`; the refined problem is made by `makeRun`. When the
   /// refined Jacobian cannot be factored there is no estimate (`failure` says why). Collective.
   static ErrorEstimate estimate(const CaseRun& coarse, const CaseRunFactory& makeRun,
-                                const std::vector<std::string>& indicatorResponses);
+                                const std::vector<std::string>& indicatorResponses,
+                                const IndicatorsWanted& wanted = {});
 };
 
 }  // namespace flowform

@@ -53,7 +53,8 @@ struct TwoLevelEstimate {
   /// (the case on the mesh refined once more). When the refined solve does not converge there
   /// is no estimate: `estimated` false and `failure` says why. Collective.
   static ErrorEstimate estimate(const CaseRun& coarse, const CaseRunFactory& makeRun,
-                                const std::vector<std::string>& indicatorResponses);
+                                const std::vector<std::string>& indicatorResponses,
+                                const IndicatorsWanted& wanted = {});
 };
 
 }  // namespace flowform
