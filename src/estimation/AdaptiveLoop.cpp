@@ -54,6 +54,10 @@ struct Target {
       return std::numeric_limits<double>::quiet_NaN();
     return byResponse->second.at(parameter);
   }
+  /// |η| / |value| (NaN without an estimate).
+  double relativeError(const CaseRun& run, const ErrorEstimate& estimate) const {
+    return std::abs(eta(estimate)) / std::max(std::abs(value(run)), 1e-300);
+  }
 };
 
 constexpr double kMaxGrowth = 16.0;  ///< the next cycle's dofs at most this many times this one's
@@ -182,14 +186,13 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
                              : "cycle " + std::to_string(cycle) + ": the solve did not converge: " + sim->statusMessage();
       break;
     }
+    // A target met: Safety Factor × its estimated relative error within the target.
+    auto meets = [&](double relative) { return safety * relative <= tolerance; };  // false for NaN
     // The indicators only size a next cycle: none after one that meets the target, or the last.
     sim->estimateErrors(indicatorResponses, [&](const ErrorEstimate& e) {
-      if (cycle + 1 == maxCycles) return false;
-      for (const Target& target : targets) {
-        const double eta = target.eta(e);
-        if (!std::isfinite(eta) || safety * std::abs(eta) > tolerance * std::abs(target.value(*sim))) return true;
-      }
-      return false;
+      return cycle + 1 < maxCycles && std::any_of(targets.begin(), targets.end(), [&](const Target& target) {
+               return !meets(target.relativeError(*sim, e));
+             });
     });
     const ErrorEstimate& estimate = sim->errorEstimate();
     if (!estimate.estimated) {
@@ -211,19 +214,18 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
     if (!estimate.sensitivities.empty()) entry["sensitivities_error_estimate"] = estimate.sensitivities;
     met = true;
     for (const Target& target : targets) {
-      const double eta = target.eta(estimate);
-      if (!std::isfinite(eta)) {  // a derivative the estimate did not reach
+      const double relative = target.relativeError(*sim, estimate);
+      if (!std::isfinite(relative)) {  // a derivative the estimate did not reach
         why = "cycle " + std::to_string(cycle) + ": no error estimate of " + target.label() + " (" + estimate.method +
               " estimated no sensitivities)";
         met = false;
         break;
       }
-      const double relative = std::abs(eta) / std::max(std::abs(target.value(*sim)), 1e-300);
       entry["relative_error_estimate"][target.label()] = relative;
       log() << "adaptivity: cycle " << cycle << ": " << target.label() << " = " << target.value(*sim)
             << ", estimated relative error " << relative << " (target " << tolerance << ", safety factor " << safety
             << ")\n";
-      met = met && safety * relative <= tolerance;
+      met = met && meets(relative);
     }
     entry["seconds"] = secondsSince(start);
     cycles.push_back(entry);

@@ -36,11 +36,7 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
   estimate.otherLevel = "coarser";
   estimate.order = fine.parameters().sublist("Error Estimation").get<double>("Order");
   const BudgetScope scope("the coarser-mesh error estimate (the case on the mesh one refinement coarser)", nullptr);
-  auto clock = std::chrono::steady_clock::now();
-  auto lap = [&](const std::string& what) {
-    estimate.timings[what] += secondsSince(clock);
-    clock = std::chrono::steady_clock::now();
-  };
+  Laps lap(estimate.timings);
 
   // The same case one (and two) refinements coarser, on the size field the run's mesh was made
   // with, each started from the next finer level's solution.

@@ -16,7 +16,7 @@ namespace flowform {
 
 ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseRunFactory& makeRun,
                                            const std::vector<std::string>& indicatorResponses,
-                                       const IndicatorsWanted& /*wanted: the indicators are made before the estimate*/) {
+                                           const IndicatorsWanted& /*wanted: made before the estimate, always*/) {
   const auto start = std::chrono::steady_clock::now();
   ErrorEstimate estimate;
   estimate.method = kName;
@@ -35,11 +35,7 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
   const int maxSteps = settings.get<int>("Newton Steps");
   const double settled = settings.get<double>("Step Tolerance");
   const BudgetScope scope("the Newton step error estimate (Newton steps on the mesh refined once more)", nullptr);
-  auto clock = std::chrono::steady_clock::now();
-  auto lap = [&](const std::string& what) {
-    estimate.timings[what] += secondsSince(clock);
-    clock = std::chrono::steady_clock::now();
-  };
+  Laps lap(estimate.timings);
 
   const std::unique_ptr<CaseRun> fineRun = makeRefinedRun(coarse, makeRun);
   Problem& fine = fineRun->problem();

@@ -10,7 +10,7 @@ namespace flowform {
 
 ErrorEstimate TwoLevelEstimate::estimate(const CaseRun& coarseRun, const CaseRunFactory& makeRun,
                                          const std::vector<std::string>& indicatorResponses,
-                                       const IndicatorsWanted& /*wanted: the indicators are made before the estimate*/) {
+                                         const IndicatorsWanted& /*wanted: made before the estimate, always*/) {
   const auto start = std::chrono::steady_clock::now();
   ErrorEstimate estimate;
   estimate.method = kName;

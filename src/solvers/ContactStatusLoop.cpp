@@ -121,9 +121,10 @@ int ContactStatusLoop::run(NonlinearSolver& solver, Vector& x, const FlowPhysics
   // (its iterations add to the last entry of newtonPerSolve).
   auto resolve = [&](NewtonOptions options) {
     // A re-solve converged to the tolerances tries the last factors first (NewtonOptions::
-    // reuseFactors). An iterate is read only after a Newton step: a simplified step that halves
-    // ||F|| bounds nothing (the old factors may not see the change, and its step is then small).
-    options.reuseFactors = options.maxIterations <= 0 && options.looseTolerance <= 0.0;
+    // reuseFactors; resolve() uses them for uncapped, tight solves only). An iterate is read only
+    // after a Newton step: a simplified step that halves ||F|| bounds nothing (the old factors may
+    // not see the change, and its step is then small).
+    options.reuseFactors = true;
     const Vector before(x, Teuchos::Copy);
     if (options.continuing) options.referenceResidual = reference;
     const SolveReport again = solver.resolve(x, physics, options);
