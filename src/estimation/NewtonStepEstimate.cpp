@@ -137,10 +137,18 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
   estimate.details["chord_steps"] = chordSteps;
   estimate.details["last_step_change"] = change;
   estimate.details["settled"] = change <= settled ? 1.0 : 0.0;
-  if (change > settled)
+  if (change > settled) {
+    // Steps that do not settle estimate nothing (a step that moved a response by its whole
+    // estimate): the refined solve is converged instead, with its own fallbacks.
     log() << "error estimate: the responses did not settle in " << factorizations
           << " Newton steps (the last step moved one by " << change
-          << " of its estimate; Error Estimation/Newton Steps): the estimate is that uncertain\n";
+          << " of its estimate; Error Estimation/Newton Steps): the two-level estimate instead\n";
+    ErrorEstimate twoLevel = TwoLevelEstimate::estimate(coarseRun, makeRun, indicatorResponses);
+    twoLevel.details["unsettled_fallback"] = 1.0;
+    twoLevel.details["unsettled_newton_steps"] = factorizations;
+    twoLevel.details["unsettled_last_step_change"] = change;
+    return twoLevel;
+  }
 
   // DDM on the refined mesh at u_f, K_f factored there exactly (NewtonStepEstimate.hpp).
   std::unique_ptr<Sensitivity> sensitivity;

@@ -8,6 +8,7 @@ FlowModel::FlowModel(Assembler& assembler, std::unique_ptr<LinearSolver> linearS
 void FlowModel::residual(const Vector& x, Vector& f) {
   ++m_numResiduals;
   m_assembler.residual(x, f);
+  if (m_shift) f.update(-m_shiftScale, *m_shift, 1.0);
 }
 
 void FlowModel::assembleJacobian(const Vector& x) {

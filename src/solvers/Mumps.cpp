@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <Teuchos_DefaultMpiComm.hpp>
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -13,6 +14,7 @@ namespace {
 
 // MUMPS's job codes and its 1-based control and information arrays.
 constexpr int kInit = -1, kEnd = -2, kAnalyse = 1, kFactor = 2, kSolve = 3;
+constexpr int kWorkspaceRetries = 4;  // ICNTL(14) up to 16× its first value
 int& icntl(DMUMPS_STRUC_C& id, int k) { return id.icntl[k - 1]; }
 int infog(const DMUMPS_STRUC_C& id, int k) { return id.infog[k - 1]; }
 
@@ -38,7 +40,11 @@ struct Mumps::Impl {
   void call(int job, const char* what) {
     id.job = job;
     dmumps_c(&id);
-    // INFOG(1) < 0 is an error, the same on every rank; −10: numerically singular.
+    check(what);
+  }
+  /// Throws for the last call's INFOG(1) < 0 (an error, the same on every rank; −10:
+  /// numerically singular).
+  void check(const char* what) const {
     if (infog(id, 1) < 0)
       throw std::runtime_error(std::string("MUMPS ") + what + " failed (INFOG(1) = " + std::to_string(infog(id, 1)) +
                                ", INFOG(2) = " + std::to_string(infog(id, 2)) + ")" +
@@ -121,7 +127,19 @@ void Mumps::doFactor(const Teuchos::RCP<const CrsMatrix>& A) {
     d.toRoot = Teuchos::rcp(new Import(rowMap, d.rootMap));
   }
   d.id.a_loc = d.values.data();
-  d.call(kFactor, "numeric factorization");
+  // Off-diagonal pivots (the contact and friction rows) can fill in beyond the analysis's
+  // estimate: INFOG(1) = −8, −9, −11, −12, −14, −15 say a workspace was too small. The
+  // factorization is tried again with ICNTL(14) (the estimate's relaxation, %) doubled, at most
+  // kWorkspaceRetries times; another error, or the last try's, is thrown.
+  for (int retry = 0;; ++retry) {
+    d.id.job = kFactor;
+    dmumps_c(&d.id);
+    const int e = infog(d.id, 1);
+    const bool workspace = e == -8 || e == -9 || e == -11 || e == -12 || e == -14 || e == -15;
+    if (!workspace || retry == kWorkspaceRetries) break;
+    icntl(d.id, 14) = 2 * std::max(icntl(d.id, 14), 20);
+  }
+  d.check("numeric factorization");
   d.factored = true;
 }
 

@@ -302,12 +302,63 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
     report.message = "Newton did not converge from the start it was given";
     return report;
   }
+  if (residualHomotopy(x, start, target, report)) return report;
+  if (budgetWasSpent()) {
+    report.message = budgetMessage();
+    return report;
+  }
   log() << "  re-solve failed; starting again from the Newtonian predictor\n";
   Tpetra::deep_copy(x, start);
   SolveReport full = solve(x, target);
   full.newtonIterations += report.newtonIterations;
   full.restarts = 1;
   return full;
+}
+
+bool NonlinearSolver::residualHomotopy(Vector& x, const Vector& start, const FlowPhysics& physics,
+                                       SolveReport& report) {
+  Tpetra::deep_copy(x, start);
+  m_model.setPhysics(physics);
+  m_model.restartLinearization();
+  if (m_beforeNewton) m_beforeNewton(x);
+  Vector r0(x.getMap());
+  m_model.residual(x, r0);
+  const double norm0 = r0.norm2();
+  if (!std::isfinite(norm0)) return false;
+  log() << "  re-solve failed; following F(x) = (1 - t) F(x0) from t = 0 at the start\n";
+  double t = 0.0, step = kFirstHomotopyStep;
+  int failures = 0;
+  while (t < 1.0 && failures <= kMaxHomotopyFailures && !budgetWasSpent()) {
+    const Vector last(x, Teuchos::Copy);
+    const double next = std::min(1.0, t + step);
+    m_model.setResidualShift(&r0, 1.0 - next);
+    NewtonOptions stage;
+    stage.continuing = true;  // the scales of x0; the duals go on from the last stage
+    stage.referenceResidual = norm0;
+    const StageReport sr = newton(x, physics, stage);
+    m_model.setResidualShift(nullptr, 0.0);
+    report.newtonIterations += sr.newtonIterations;
+    report.stages.push_back(sr);
+    log() << "  homotopy t = " << next << ": " << (sr.converged ? "converged" : "failed") << " in "
+          << sr.newtonIterations << " Newton iteration(s)\n";
+    if (sr.converged) {
+      t = next;
+      step *= 2.0;
+      report.residualNorm = sr.residualNorm;
+    } else {
+      Tpetra::deep_copy(x, last);
+      m_model.restartLinearization();
+      step = (next - t) / 2.0;
+      ++failures;
+    }
+  }
+  if (t < 1.0) {
+    Tpetra::deep_copy(x, start);
+    return false;
+  }
+  report.converged = true;
+  report.message.clear();
+  return true;
 }
 
 SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double minimumStep, double finalLooseTolerance) {

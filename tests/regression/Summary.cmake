@@ -25,14 +25,14 @@ add_test(NAME not_converged_exits_3
                  -- converged=false exit_status=3)
 set_tests_properties(not_converged_exits_3 PROPERTIES LABELS "regression")
 # A singular linear system is reported as not converged, exit 3 with results written —
-# never an abort. γ = 1e100 makes the Newtonian predictor's μ = 1/(3γ) vanish next to the
-# contact penalties; the extrusion's re-solve after its first contact change falls back to
-# that predictor, whose factorization fails.
+# never an abort. γ = 1e200 makes the Newtonian predictor's μ = 1/(3γ) vanish next to the
+# pressure stabilization (h²/μ): its factorization fails from every start (at γ = 1e100 the
+# run converges).
 add_test(NAME singular_matrix_exits_3
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_summary.py --expect-exit 3
                  $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml ${CMAKE_CURRENT_BINARY_DIR}/singular
                  --set "Adaptivity/Enabled=false"
-                 --set "Material/Rate Constant=1e100" --set "Material/Rate Exponent=20"
+                 --set "Material/Rate Constant=1e200" --set "Material/Rate Exponent=20"
                  --set "Boundary Conditions/container/Friction Coefficient=0.0"
                  --set "Boundary Conditions/die_face/Friction Coefficient=0.0"
                  --set "Boundary Conditions/die_land/Friction Coefficient=0.0"

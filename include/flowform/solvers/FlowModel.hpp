@@ -27,8 +27,14 @@ class FlowModel {
   }
   Teuchos::RCP<const Map> map() const { return m_jacobian->getRowMap(); }
 
-  /// f = F(x).
+  /// f = F(x) − c s with the residual shift (s, c) set by setResidualShift (none by default).
   void residual(const Vector& x, Vector& f);
+  /// The residual homotopy's shift (NonlinearSolver::residualHomotopy): residual() subtracts
+  /// `scale` × `shift` (a constant vector: the Jacobian is unchanged). nullptr removes it.
+  void setResidualShift(const Vector* shift, double scale) {
+    m_shift = shift;
+    m_shiftScale = scale;
+  }
   /// Assembles J(x) (the factors no longer match until factorJacobian()).
   void assembleJacobian(const Vector& x);
   /// Factors the assembled J. Throws std::runtime_error when the factorization fails.
@@ -73,6 +79,8 @@ class FlowModel {
   Assembler& m_assembler;
   Teuchos::RCP<FECrsMatrix> m_jacobian;
   Teuchos::RCP<Vector> m_jacobianPoint;
+  const Vector* m_shift = nullptr;
+  double m_shiftScale = 0.0;
   std::unique_ptr<LinearSolver> m_linearSolver;
   bool m_jacobianValid = false;
   bool m_hasFactors = false;

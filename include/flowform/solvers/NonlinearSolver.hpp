@@ -123,6 +123,17 @@ class NonlinearSolver {
   /// below the last step (a geometric series of ratio ≤ 1/2), as for the update test of Newton.
   static constexpr double kReuseContraction = 0.5;
   static constexpr int kMaxReusedSteps = 25;
+  /// The re-solve's second try from its start x0 (before the predictor): the homotopy
+  /// G(x, t) = F(x) − (1 − t) F(x0) = 0 followed from t = 0 (solved by x0) to t = 1 (F = 0),
+  /// Newton at each t from the last one's solution, the penalty scales and the physics of x0
+  /// held; the increase of t doubles after a converged stage and halves after a failed one
+  /// (given up after kMaxHomotopyFailures failed stages: a branch that turns back before t = 1). It stays on the branch of solutions that x0 is near
+  /// (another mesh's converged state: the same contact zones), where a Newton that overshoots
+  /// in its first steps, or the predictor, may land on another. true when F(x) = 0 was reached;
+  /// x is then the solution, else `start`. Iterations add to `report`.
+  bool residualHomotopy(Vector& x, const Vector& start, const FlowPhysics& physics, SolveReport& report);
+  static constexpr double kFirstHomotopyStep = 0.25;
+  static constexpr int kMaxHomotopyFailures = 3;
   /// x += −J⁻¹ F(x): exact for a linear problem.
   double linearSolve(Vector& x, const FlowPhysics& physics);
 
