@@ -134,7 +134,8 @@ class Solution:
     roll_power: float            # torque·ω, one roll
     friction_power: float        # one roll: ∫ τ |ωR − v_t| R dφ
     plastic_power: float         # whole strip: Q · 2kw ln(h0/h1) (homogeneous compression)
-    tension_power: float         # whole strip: Q (σ_f − σ_b), what the tensions take out (>0) or put in
+    tension_power: float         # whole strip: Q (σ_f − σ_b), the power the tensions put in
+                                 # (balance: 2·roll_power + tension_power = 2·friction_power + plastic_power)
     mean_pressure: float         # force / contact_length
     phi: np.ndarray = field(repr=False)        # radians
     pressure: np.ndarray = field(repr=False)   # p
