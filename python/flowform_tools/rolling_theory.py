@@ -321,11 +321,15 @@ def derivative(parameter, step=None, **kwargs):
     """Central finite differences of the slab solution's responses with respect to one keyword of
     solve (nu, m, R, h0, h1, sigma_b, sigma_f, sigma0): {response: d response / d parameter}.
     The step defaults to 1e-4 × max(|value|, 0.01); the truncation error is O(step²) and the
-    integration error, smooth in the parameter at fixed steps, cancels to O(steps⁻⁴)."""
+    integration error, smooth in the parameter at fixed steps, cancels to O(steps⁻⁴). At m = 1
+    (Tresca's upper bound) the difference is one-sided (3f(m) − 4f(m − δ) + f(m − 2δ))/2δ."""
     x = kwargs[parameter]
     dx = step if step is not None else 1e-4 * max(abs(x), 0.01)
-    plus = solve(**{**kwargs, parameter: x + dx})
-    minus = solve(**{**kwargs, parameter: x - dx})
+    at = lambda v: solve(**{**kwargs, parameter: v})
+    if parameter == "m" and x + dx > 1.0:       # m ≤ 1: one-sided, second order, from below
+        f0, f1, f2 = at(x), at(x - dx), at(x - 2 * dx)
+        return {r: (3 * getattr(f0, r) - 4 * getattr(f1, r) + getattr(f2, r)) / (2.0 * dx) for r in RESPONSES}
+    plus, minus = at(x + dx), at(x - dx)
     return {r: (getattr(plus, r) - getattr(minus, r)) / (2.0 * dx) for r in RESPONSES}
 
 
