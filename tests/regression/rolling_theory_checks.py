@@ -237,10 +237,10 @@ def derivatives():
     failed += checks.check(rel(fd, dT) < 1e-6, f"Tresca closed form dT/dm = {dT:.8f}, FD {fd:.8f}")
     for nu in (0.1, 0.2, 0.3):
         d = rt.derivative("nu", R=R, h0=H0, h1=H1, nu=nu)
-        lo, hi = rt.solve(R, H0, H1, nu=nu - 0.005), rt.solve(R, H0, H1, nu=nu + 0.005)
-        sec = (hi.force - lo.force) / 0.01
+        lo, hi = rt.solve(R, H0, H1, nu=nu - 0.002), rt.solve(R, H0, H1, nu=nu + 0.002)
+        sec = (hi.force - lo.force) / 0.004     # secant error (δ²/6) P'''/P' ~ 1e-4
         failed += checks.check(d["force"] > 0 and d["torque"] > 0 and d["forward_slip"] > 0 and rel(d["force"], sec) < 1e-3,
-                               f"ν = {nu}: dP/dν = {d['force']:.4f} (secant over ±0.005 {sec:.4f}), dT/dν = "
+                               f"ν = {nu}: dP/dν = {d['force']:.4f} (secant over ±0.002 {sec:.4f}, {rel(d['force'], sec):.1e}), dT/dν = "
                                f"{d['torque']:.4f}, d(slip)/dν = {d['forward_slip']:.5f}, dφ_n/dν = {d['neutral_angle']:.3f}°: all > 0")
     return failed
 
