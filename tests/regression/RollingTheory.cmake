@@ -3,5 +3,5 @@
 # solution, Tresca's closed neutral point), exact identities (power, mass) and Hill's fit within
 # its range (regression/rolling_theory_checks.py). No flowform run: numpy only, a few seconds.
 add_test(NAME rolling_theory
-         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/rolling_theory_checks.py)
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/rolling_theory_checks.py)
 set_tests_properties(rolling_theory PROPERTIES LABELS "regression" TIMEOUT 60)
