@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <limits>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -222,13 +224,18 @@ void ContactWall::checkTangency(const std::string& group) const {
     }
   }
   if (worst > m_settings.tangencyTolerance) {
+    auto num = [](double v) {
+      std::ostringstream o;
+      o << std::setprecision(6) << v;
+      return o.str();
+    };
     const auto& a = m_coords[worstSegment];
     const auto& b = m_coords[next(worstSegment)];
     throw InputError("Boundary Conditions/" + group + "/Tool Motion: the tool must move tangentially to its own "
-                     "surface (a steady state), but on the segment (" + Teuchos::toString(a[0]) + ", " +
-                     Teuchos::toString(a[1]) + ")–(" + Teuchos::toString(b[0]) + ", " + Teuchos::toString(b[1]) +
-                     ") |v_w·n|/|v_w| = " + Teuchos::toString(worst) + " > Tangency Tolerance " +
-                     Teuchos::toString(m_settings.tangencyTolerance) +
+                     "surface (a steady state), but on the segment (" + num(a[0]) + ", " +
+                     num(a[1]) + ")–(" + num(b[0]) + ", " + num(b[1]) +
+                     ") |v_w·n|/|v_w| = " + num(worst) + " > Tangency Tolerance " +
+                     num(m_settings.tangencyTolerance) +
                      " (a Translation must be parallel to a straight wall, a Rotation centred on the wall's circle)");
   }
 }
