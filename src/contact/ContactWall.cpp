@@ -74,13 +74,13 @@ static void buildValidParameters(const ValidList& valid) {
       "Velocity ω, counter-clockwise positive, v_w = ω e_z × (x − c), e.g. a roll (plane strain only). The normal "
       "condition acts on (u − v_w)·n and the friction law on the relative slip (u − v_w)·t",
       Teuchos::tuple<std::string>("Fixed", "Translation", "Rotation"), valid.get());
-  valid->set("Tool Velocity X", 0.0, "Tool Motion = Translation: the tool's velocity, x component [velocity]");
-  valid->set("Tool Velocity Y", 0.0, "Tool Motion = Translation: the tool's velocity, y component [velocity]");
+  valid->set("Tool Velocity X", 0.0, "Tool Motion = Translation: the tool's velocity, x component [velocity]", finiteNumber());
+  valid->set("Tool Velocity Y", 0.0, "Tool Motion = Translation: the tool's velocity, y component [velocity]", finiteNumber());
   valid->set("Rotation Centre X", 0.0,
              "Tool Motion = Rotation: the centre c the tool turns about, x [length]; also the point the Tool Torque "
-             "response is taken about");
-  valid->set("Rotation Centre Y", 0.0, "Tool Motion = Rotation: the centre c, y [length]; see Rotation Centre X");
-  valid->set("Angular Velocity", 0.0, "Tool Motion = Rotation: ω [1/time], counter-clockwise positive");
+             "response is taken about", finiteNumber());
+  valid->set("Rotation Centre Y", 0.0, "Tool Motion = Rotation: the centre c, y [length]; see Rotation Centre X", finiteNumber());
+  valid->set("Angular Velocity", 0.0, "Tool Motion = Rotation: ω [1/time], counter-clockwise positive", finiteNumber());
   valid->set("Tangency Tolerance", 1e-3,
              "a moving tool: the largest |v_w·n|/|v_w| accepted at the midpoints of the wall's segments (n the "
              "segment's normal). 0 to round-off for a straight wall along the velocity or a polyline inscribed in "
@@ -180,8 +180,6 @@ void ContactWall::readToolMotion(const std::string& group, const Teuchos::Parame
   m.centre = {list.get<double>("Rotation Centre X"), list.get<double>("Rotation Centre Y")};
   m.angularVelocity = list.get<double>("Angular Velocity");
   m_settings.tangencyTolerance = list.get<double>("Tangency Tolerance");
-  for (double v : {m.velocity[0], m.velocity[1], m.centre[0], m.centre[1], m.angularVelocity})
-    if (!std::isfinite(v)) throw InputError(where + ": the motion's parameters must be finite numbers");
   // Entries the motion does not read: said (Rotation Centre is also where Tool Torque is taken).
   const char* translationOnly[] = {"Tool Velocity X", "Tool Velocity Y"};
   if (m.kind != ToolMotion::Kind::Translation)
