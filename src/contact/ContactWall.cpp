@@ -1,6 +1,9 @@
 #include "flowform/contact/ContactWall.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <limits>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -63,6 +66,26 @@ static void buildValidParameters(const ValidList& valid) {
       "friction force is exactly ν times the normal force; the two differ by the deviatoric normal stress s_nn, "
       "which is ±k on a yielding rake face; docs/cutting.md)",
       Teuchos::tuple<std::string>("Pressure", "Contact Force"), valid.get());
+  Teuchos::setStringToIntegralParameter<int>(
+      "Tool Motion", "Fixed",
+      "how the tool moves, tangentially to its own surface (a steady state; docs/contact.md \"Moving tools\"): Fixed: "
+      "at rest; Translation: with the velocity (Tool Velocity X, Tool Velocity Y), e.g. a container moving with the "
+      "billet (axisymmetric: along the axis only); Rotation: about (Rotation Centre X, Rotation Centre Y) at Angular "
+      "Velocity ω, counter-clockwise positive, v_w = ω e_z × (x − c), e.g. a roll (plane strain only). The normal "
+      "condition acts on (u − v_w)·n and the friction law on the relative slip (u − v_w)·t",
+      Teuchos::tuple<std::string>("Fixed", "Translation", "Rotation"), valid.get());
+  valid->set("Tool Velocity X", 0.0, "Tool Motion = Translation: the tool's velocity, x component [velocity]", finiteNumber());
+  valid->set("Tool Velocity Y", 0.0, "Tool Motion = Translation: the tool's velocity, y component [velocity]", finiteNumber());
+  valid->set("Rotation Centre X", 0.0,
+             "Tool Motion = Rotation: the centre c the tool turns about, x [length]; also the point the Tool Torque "
+             "response is taken about", finiteNumber());
+  valid->set("Rotation Centre Y", 0.0, "Tool Motion = Rotation: the centre c, y [length]; see Rotation Centre X", finiteNumber());
+  valid->set("Angular Velocity", 0.0, "Tool Motion = Rotation: ω [1/time], counter-clockwise positive", finiteNumber());
+  valid->set("Tangency Tolerance", 1e-3,
+             "a moving tool: the largest |v_w·n|/|v_w| accepted at the midpoints of the wall's segments (n the "
+             "segment's normal). 0 to round-off for a straight wall along the velocity or a polyline inscribed in "
+             "a circle about the rotation centre; the default allows rounded coordinates",
+             positive());
   valid->set("Start Group", "",
              "a Contact Wall with Released Nodes = Free Surface: the boundary group at the wall's upstream end; a Free "
              "Surface group: the boundary group that shares its fixed start (docs/theory.md §3.1)");
@@ -102,6 +125,7 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   m_settings.closedCorners = list.get<std::string>("Convex Corners") == "Closed";
   m_settings.coulombOnContactForce = list.get<std::string>("Coulomb Normal Force") == "Contact Force";
   m_settings.upstreamGroup = list.get<std::string>("Start Group");
+  readToolMotion(group, params, list);
   // Entries the law does not read: said, not silently dropped (a law switched by --set keeps the
   // old law's entries in the file, so a warning, not an error).
   {
@@ -131,6 +155,7 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   refreshGeometry(mesh);
   m_toolCoords = m_coords;
   m_toolNormals = m_curve.normals;
+  checkTangency(group);
   if (m_settings.releasedFreeSurface && !mesh.hasBoundary(m_settings.upstreamGroup))
     throw InputError("Boundary Conditions/" + group + "/Start Group: mesh '" + mesh.source +
                      "' has no boundary group '" + m_settings.upstreamGroup + "'; it has: " + mesh.boundaryNames());
@@ -140,6 +165,76 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
     // A free surface shares exactly one end with its Start Group (FreeSurface says so otherwise).
     if (m_settings.releasedFreeSurface && ends.first) m_upstreamEnd = 0;
     if (m_settings.releasedFreeSurface && ends.last && !m_curve.closed) m_upstreamEnd = numNodes() - 1;
+  }
+}
+
+void ContactWall::readToolMotion(const std::string& group, const Teuchos::ParameterList& given,
+                                 const Teuchos::ParameterList& list) {
+  const std::string where = "Boundary Conditions/" + group + "/Tool Motion";
+  const std::string kind = list.get<std::string>("Tool Motion");  // validated: one of the three
+  ToolMotion& m = m_settings.motion;
+  m.kind = kind == "Translation" ? ToolMotion::Kind::Translation
+           : kind == "Rotation"  ? ToolMotion::Kind::Rotation
+                                 : ToolMotion::Kind::Fixed;
+  m.velocity = {list.get<double>("Tool Velocity X"), list.get<double>("Tool Velocity Y")};
+  m.centre = {list.get<double>("Rotation Centre X"), list.get<double>("Rotation Centre Y")};
+  m.angularVelocity = list.get<double>("Angular Velocity");
+  m_settings.tangencyTolerance = list.get<double>("Tangency Tolerance");
+  // Entries the motion does not read: said (Rotation Centre is also where Tool Torque is taken).
+  const char* translationOnly[] = {"Tool Velocity X", "Tool Velocity Y"};
+  if (m.kind != ToolMotion::Kind::Translation)
+    for (const char* entry : translationOnly)
+      if (given.isParameter(entry)) warn() << where << " = " << kind << " does not use '" << entry << "' (ignored)\n";
+  if (m.kind != ToolMotion::Kind::Rotation && given.isParameter("Angular Velocity"))
+    warn() << where << " = " << kind << " does not use 'Angular Velocity' (ignored)\n";
+  if (m_geometry == Geometry::Axisymmetric) {
+    if (m.kind == ToolMotion::Kind::Rotation)
+      throw InputError(where + " = Rotation: an axisymmetric tool cannot turn in the r-z plane (the rotation "
+                       "would not be axisymmetric); allowed here: Fixed, or Translation along the axis (Tool "
+                       "Velocity Y)");
+    if (m.kind == ToolMotion::Kind::Translation && m.velocity[0] != 0.0)
+      throw InputError(where + " = Translation: an axisymmetric tool moves along the axis only: Tool Velocity X "
+                       "(radial) must be 0 (got " + Teuchos::toString(m.velocity[0]) + ")");
+  }
+}
+
+void ContactWall::checkTangency(const std::string& group) const {
+  if (!m_settings.motion.moving()) return;
+  // At each segment's midpoint m against its own normal n_s: v_w(m)·n_s = 0 exactly for a
+  // straight wall along V and for a chord of a circle about c (m − c is along n_s).
+  double worst = 0.0;
+  int worstSegment = -1;
+  for (int k = 0; k < numNodes(); ++k) {
+    const int o = next(k);
+    if (o < 0) continue;
+    const auto& a = m_coords[k];
+    const auto& b = m_coords[o];
+    const double dx = b[0] - a[0], dy = b[1] - a[1], len = std::hypot(dx, dy);
+    // The segment normal with the curve's orientation: the nodal normals' side (t = (−n_y, n_x)).
+    const std::array<double, 2> mid{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])};
+    const std::array<double, 2> v = m_settings.motion.velocityAt(mid);
+    const double speed = std::hypot(v[0], v[1]);
+    if (!(speed > 0.0) || !(len > 0.0)) continue;
+    const double ratio = std::abs(v[0] * dy - v[1] * dx) / (len * speed);  // |v·n_s| / |v|
+    if (ratio > worst) {
+      worst = ratio;
+      worstSegment = k;
+    }
+  }
+  if (worst > m_settings.tangencyTolerance) {
+    auto num = [](double v) {
+      std::ostringstream o;
+      o << std::setprecision(6) << v;
+      return o.str();
+    };
+    const auto& a = m_coords[worstSegment];
+    const auto& b = m_coords[next(worstSegment)];
+    throw InputError("Boundary Conditions/" + group + "/Tool Motion: the tool must move tangentially to its own "
+                     "surface (a steady state), but on the segment (" + num(a[0]) + ", " +
+                     num(a[1]) + ")–(" + num(b[0]) + ", " + num(b[1]) +
+                     ") |v_w·n|/|v_w| = " + num(worst) + " > Tangency Tolerance " +
+                     num(m_settings.tangencyTolerance) +
+                     " (a Translation must be parallel to a straight wall, a Rotation centred on the wall's circle)");
   }
 }
 
@@ -153,6 +248,20 @@ void ContactWall::refreshGeometry(const Mesh& mesh) {
   for (GO node : m_curve.nodes) m_coords.push_back(mesh.coords[node]);
   if (m_settings.releasedFreeSurface && !m_toolNormals.empty()) m_curve.normals = m_toolNormals;
   m_cornerNormals.assign(m_curve.nodes.size(), {});
+  m_cornerSpeeds.assign(m_curve.nodes.size(), {});
+  // The tool's surface velocity at each node, split along the node's normal and tangent (all 0
+  // for a fixed tool, so that its relative velocities are the material's, bit for bit).
+  m_wallVelocity.assign(m_curve.nodes.size(), {0.0, 0.0});
+  m_wallNormalSpeed.assign(m_curve.nodes.size(), 0.0);
+  m_wallTangentialSpeed.assign(m_curve.nodes.size(), 0.0);
+  if (!m_settings.motion.moving()) return;
+  for (size_t k = 0; k < m_curve.nodes.size(); ++k) {
+    const auto v = m_settings.motion.velocityAt(m_coords[k]);
+    const auto& n = m_curve.normals[k];
+    m_wallVelocity[k] = v;
+    m_wallNormalSpeed[k] = v[0] * n[0] + v[1] * n[1];
+    m_wallTangentialSpeed[k] = -n[1] * v[0] + n[0] * v[1];
+  }
 }
 
 std::vector<std::array<GO, 2>> ContactWall::couplings() const {
@@ -172,14 +281,15 @@ double ContactWall::violation(int k, const std::vector<double>& p, const std::ve
   constexpr double kNone = -std::numeric_limits<double>::infinity();
   if (held(k) || (m_active[k] != kFree && m_settings.neverReleased)) return kNone;  // no status change
   if (m_active[k] == kComplementary) return kNone;  // decided inside Newton
-  const auto& n = m_curve.normals[k];
-  const double un = u[k][0] * n[0] + u[k][1] * n[1];
+  const double un = relativeNormalVelocity(k, u[k]);  // (u − v_w)·n
   if (m_active[k] == kSelfDeciding) return -un - penetrationTolerance;  // it leaves the tool: free
   if (m_active[k] == kActive) return -p[k] - pressureTolerance;          // tension beyond the tolerance
   if (gap(k) > 1e-9 * m_curve.arcLength.back()) return kNone;  // off the tool: the surface update brings it back
   double v = un - penetrationTolerance;                        // moving into the tool
-  for (const auto& other : m_cornerNormals[k])  // convex tool corner: into every half-plane
-    v = std::min(v, u[k][0] * other[0] + u[k][1] * other[1] - penetrationTolerance);
+  for (size_t c = 0; c < m_cornerNormals[k].size(); ++c) {  // convex tool corner: into every half-plane
+    const auto& other = m_cornerNormals[k][c];
+    v = std::min(v, u[k][0] * other[0] + u[k][1] * other[1] - m_cornerSpeeds[k][c] - penetrationTolerance);
+  }
   return v;
 }
 
@@ -275,10 +385,11 @@ void ContactWall::takeStatusesFrom(const ContactWall& other, const std::vector<s
     }
     if (zoneLimit && u) {
       const auto& v = (*u)[k];
-      const auto& n = m_curve.normals[k];
-      active = v[0] * n[0] + v[1] * n[1] > penetrationTolerance;
-      for (const auto& corner : m_cornerNormals[k])
-        active = active && v[0] * corner[0] + v[1] * corner[1] > penetrationTolerance;
+      active = relativeNormalVelocity(k, v) > penetrationTolerance;
+      for (size_t c = 0; c < m_cornerNormals[k].size(); ++c) {
+        const auto& corner = m_cornerNormals[k][c];
+        active = active && v[0] * corner[0] + v[1] * corner[1] - m_cornerSpeeds[k][c] > penetrationTolerance;
+      }
     }
     if (m_active[k] == kComplementary)
       m_inContact[k] = active;  // its own complementarity decides from here
@@ -320,8 +431,7 @@ int ContactWall::readContact(const std::vector<std::array<double, 2>>& u) {
   int changed = 0;
   for (int k = 0; k < numNodes(); ++k) {
     if (m_active[k] != kComplementary) continue;
-    const auto& n = m_curve.normals[k];
-    const char pressing = u[k][0] * n[0] + u[k][1] * n[1] > 0.0;
+    const char pressing = relativeNormalVelocity(k, u[k]) > 0.0;  // (u − v_w)·n
     changed += pressing != m_inContact[k];
     m_inContact[k] = pressing;
   }

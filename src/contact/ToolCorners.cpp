@@ -16,7 +16,7 @@ void markConvexToolCorners(std::vector<ContactWall>& walls) {
           const double dx = walls[a].nodeCoordinates(along)[0] - walls[a].nodeCoordinates(ka)[0];
           const double dy = walls[a].nodeCoordinates(along)[1] - walls[a].nodeCoordinates(ka)[1];
           const auto& nb = cb.normals[kb];
-          if (dx * nb[0] + dy * nb[1] > 0.0) walls[a].addCornerNormal(ka, nb);
+          if (dx * nb[0] + dy * nb[1] > 0.0) walls[a].addCornerNormal(ka, nb, walls[b].wallNormalSpeed(kb));
         }
     }
 }

@@ -67,8 +67,7 @@ std::vector<std::vector<WallNodeState>> wallStates(const std::vector<ContactWall
     for (int k = 0; k < walls[w].numNodes(); ++k) {
       const bool free = b[k] == FrictionBranch::Free;
       const bool slips = b[k] == FrictionBranch::Slip || b[k] == FrictionBranch::SlipTresca;
-      const auto& n = walls[w].curve().normals[k];
-      const double ut = -n[1] * u[k][0] + n[0] * u[k][1];  // u·t, t = (−n_y, n_x), as the law takes it
+      const double ut = walls[w].relativeSlip(k, u[k].data());  // (u − v_w)·t, t = (−n_y, n_x), as the law takes it
       const int sign = coulombLike && slips ? (ut >= 0.0 ? 1 : -1) : 0;
       all[w].push_back({b[k], free || !usesPressure ? true : p[k] > 0.0, sign});
     }

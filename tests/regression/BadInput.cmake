@@ -180,6 +180,30 @@ flowform_exit_test(bad_input_material_sensitivity_with_tresca CASE contact_small
 flowform_exit_test(bad_input_contact_wall_zero_length_segment CASE contact_small.xml
   SET "Mesh/File=../../data/unit_square_zero_segment.msh"
   CONTAINS "top" "zero-length segment" "unit_square_zero_segment.msh")
+# A moving tool (Tool Motion, docs/contact.md "Moving tools"): it must move tangentially to its own
+# surface; it cannot turn, nor move radially, in an axisymmetric case; the motion is one of three.
+flowform_exit_test(bad_input_tool_motion_not_tangent CASE contact_small.xml
+  SET "Boundary Conditions/top/Tool Motion=Translation" "Boundary Conditions/top/Tool Velocity X=1.0"
+      "Boundary Conditions/top/Tool Velocity Y=0.1"
+  CONTAINS "Boundary Conditions/top/Tool Motion" "tangentially" "Tangency Tolerance")
+flowform_exit_test(bad_input_tool_rotation_off_centre CASE contact_small.xml
+  SET "Boundary Conditions/top/Tool Motion=Rotation" "Boundary Conditions/top/Angular Velocity=1.0"
+      "Boundary Conditions/top/Rotation Centre X=0.5" "Boundary Conditions/top/Rotation Centre Y=-10.0"
+  CONTAINS "Boundary Conditions/top/Tool Motion" "tangentially")
+flowform_exit_test(bad_input_tool_rotation_axisymmetric CASE contact_small.xml
+  SET "Problem/Geometry=Axisymmetric" "Boundary Conditions/top/Tool Motion=Rotation"
+      "Boundary Conditions/top/Angular Velocity=1.0"
+  CONTAINS "Boundary Conditions/top/Tool Motion = Rotation" "axisymmetric" "Translation along the axis")
+flowform_exit_test(bad_input_tool_translation_radial_axisymmetric CASE contact_small.xml
+  SET "Problem/Geometry=Axisymmetric" "Boundary Conditions/top/Tool Motion=Translation"
+      "Boundary Conditions/top/Tool Velocity X=1.0"
+  CONTAINS "Boundary Conditions/top/Tool Motion = Translation" "Tool Velocity X")
+flowform_exit_test(bad_input_tool_motion_unknown CASE contact_small.xml
+  SET "Boundary Conditions/top/Tool Motion=Sliding"
+  CONTAINS "Boundary Conditions/top" "Tool Motion" "Sliding")
+# The good one: a tool translating along the wall converges.
+flowform_exit_test(regression_good_tool_translation CASE contact_small.xml STATUS 0 CONVERGED
+  SET "Boundary Conditions/top/Tool Motion=Translation" "Boundary Conditions/top/Tool Velocity X=0.5")
 
 # --- command line ------------------------------------------------------------------------------
 flowform_exit_test(bad_input_unknown_option CASE channel_small.xml

@@ -1,8 +1,9 @@
 # The discrete power balance closes to solver tolerance (power_balance.py), with friction
 # (Coulomb ν = 0.1, plane strain), without, axisymmetric, and on the mesh a free surface moved
-# (the separating die land, docs/theory.md §3.4: the traction-free surface adds no power).
+# (the separating die land, docs/theory.md §3.4: the traction-free surface adds no power); and with a
+# moving tool (the container translating at the ram speed, Coulomb ν = 0.1: its Tool Power enters).
 set(FLOWFORM_PYTHON /usr/bin/python3)
-foreach(variant coulomb frictionless axisymmetric separating_land)
+foreach(variant coulomb frictionless axisymmetric separating_land moving_container)
   set(case ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml)
   set(extra --set "Adaptivity/Enabled=false")  # the scene's own mesh, solved once
   if(variant STREQUAL "frictionless")
@@ -11,6 +12,9 @@ foreach(variant coulomb frictionless axisymmetric separating_land)
               --set "Boundary Conditions/die_land/Friction Coefficient=0.0")
   elseif(variant STREQUAL "axisymmetric")
     set(case ${FLOWFORM_SOURCE_DIR}/xml/extrusion_axisym.xml)
+  elseif(variant STREQUAL "moving_container")
+    list(APPEND extra --moving-wall container --set "Boundary Conditions/container/Tool Motion=Translation"
+              --set "Boundary Conditions/container/Tool Velocity X=1.0")
   elseif(variant STREQUAL "separating_land")
     set(case ${FLOWFORM_SOURCE_DIR}/xml/extrusion_separation.xml)
   endif()

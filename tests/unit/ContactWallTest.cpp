@@ -421,4 +421,139 @@ TEUCHOS_UNIT_TEST(ContactWall, ComplementarityTangentMatchesFiniteDifferences) {
   }
 }
 
+// ---------------------------------------------------------------------------------------
+// Moving tools (docs/theory.md §2 "Moving tools"): the normal penalty on (u − v_w)·n and the laws
+// on the relative slip (u − v_w)·t. The bottom wall: n = (0, −1), t = (1, 0).
+// ---------------------------------------------------------------------------------------
+
+/// makeWall's wall with Tool Motion set by `motion` (its entries added to the list).
+ContactWall makeMovingWall(const std::string& law, double nu, double m, const Teuchos::ParameterList& motion) {
+  Teuchos::ParameterList p;
+  p.set("Type", "Contact Wall");
+  p.set("Friction Law", law);
+  p.set("Friction Coefficient", nu);
+  p.set("Shear Factor", m);
+  p.set("Norton Coefficient", 0.7);
+  p.set("Norton Exponent", 0.3);
+  p.set("Normal Penalty Factor", 100.0);
+  p.set("Tangential Penalty Factor", 10.0);
+  p.setParameters(motion);
+  ContactWall wall("bottom", p, bottomMesh(), Geometry::PlaneStrain);
+  wall.setScales({2.0, 2.0, 2.0}, {1.5, 1.5, 1.5});
+  return wall;
+}
+
+Teuchos::ParameterList translation(double vx) {
+  Teuchos::ParameterList m;
+  m.set("Tool Motion", "Translation");
+  m.set("Tool Velocity X", vx);
+  return m;
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, MovingToolSlipIsRelativeToTheTool) {
+  const ContactWall wall = makeMovingWall("Coulomb", 0.2, 0.0, translation(0.8));
+  TEST_FLOATING_EQUALITY(wall.wallTangentialSpeed(1), 0.8, 1e-15);
+  TEST_EQUALITY_CONST(wall.wallNormalSpeed(1), 0.0);
+  const double p[3] = {1.0, 2.0, 4.0};
+  const double fHat = 0.2 * (kL * (2.0 / 3 + 1.0 / 6) + kL * (2.0 / 3 + 4.0 / 6));
+  // The material moves along +t at 0.3, the tool faster at 0.8: the relative slip is −0.5, so the
+  // tool drags the material forward: g = −f̂ (a fixed tool gives +f̂ at the same u, test above).
+  const double u[2] = {0.3, -0.01};
+  bool sticks = true;
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, V(u, p).data(), &sticks), -fHat, 1e-14);
+  TEST_ASSERT(!sticks);
+  TEST_FLOATING_EQUALITY(makeWall("Coulomb", 0.2).tangentialForce(1, V(u, p).data()), fHat, 1e-14);
+  // Residual: R = α_n ((u − v_w)·n) n + g t, α_n = 100·2, (u − v_w)·n = 0.01.
+  double R[2] = {0.0, 0.0};
+  wall.addNodeResidual(1, V(u, p).data(), R);
+  TEST_FLOATING_EQUALITY(R[0], -fHat, 1e-14);
+  TEST_FLOATING_EQUALITY(R[1], 200.0 * 0.01 * (-1.0), 1e-14);
+  // Moving with the tool up to 1e-4: stick, g = α_t (u_t − v_t) = 10·2·1e-4.
+  const double withTool[2] = {0.8 + 1e-4, -0.01};
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(1, V(withTool, p).data(), &sticks), 20.0 * 1e-4, 1e-9);
+  TEST_ASSERT(sticks);
+  // The other laws on the same relative slip −0.5: Tresca −m S/√3, Norton α_f K A (s²+ε²)^((q−1)/2) s.
+  const double S = 1.5 * 2.0 * kL / 2.0;  // Σ ∫ N_1 σ̄ ds over both segments, σ̄ = 1.5
+  TEST_FLOATING_EQUALITY(makeMovingWall("Tresca", 0.0, 0.5, translation(0.8)).tangentialForce(1, V(u, p).data()),
+                         -0.5 * S / std::sqrt(3.0), 1e-14);
+  const double norton = 0.7 * kL * std::pow(0.25 + 1e-12, 0.5 * (0.3 - 1.0)) * (-0.5);
+  TEST_FLOATING_EQUALITY(makeMovingWall("Norton", 0.0, 0.0, translation(0.8)).tangentialForce(1, V(u, p).data()),
+                         norton, 1e-12);
+  TEST_EQUALITY_CONST(makeMovingWall("None", 0.2, 0.0, translation(0.8)).tangentialForce(1, V(u, p).data()), 0.0);
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, RotatingToolNormalAndSlipAtAnEndNode) {
+  // ω = 0.5 about c = (0.5, −2): v_w = ω (−(y − c_y), x − c_x); at node 0 (0, 0) v_w = (−1, −0.25)
+  // (counter-clockwise: above the centre the tool moves to −x), so v_w·n = 0.25 and v_w·t = −1. The straight wall is no circle about c: the tolerance is opened
+  // to let the test see a tool velocity with a normal part (the segments' worst is 0.124).
+  Teuchos::ParameterList m;
+  m.set("Tool Motion", "Rotation");
+  m.set("Angular Velocity", 0.5);
+  m.set("Rotation Centre X", 0.5);
+  m.set("Rotation Centre Y", -2.0);
+  m.set("Tangency Tolerance", 0.2);
+  const ContactWall wall = makeMovingWall("Coulomb", 0.2, 0.0, m);
+  TEST_FLOATING_EQUALITY(wall.wallVelocity(0)[0], -1.0, 1e-15);
+  TEST_FLOATING_EQUALITY(wall.wallVelocity(0)[1], -0.25, 1e-15);
+  TEST_FLOATING_EQUALITY(wall.wallNormalSpeed(0), 0.25, 1e-15);
+  const double pEnd[3] = {99.0, 1.0, 2.0};
+  const double u[2] = {0.2, -0.3};  // (u − v_w)·n = 0.3 − 0.25 = 0.05; slip 0.2 − (−1) = 1.2: g = +f̂
+  double R[2] = {0.0, 0.0};
+  wall.addNodeResidual(0, V(u, pEnd).data(), R);
+  const double fHat = 0.2 * kL * (1.0 / 3 + 2.0 / 6);
+  TEST_FLOATING_EQUALITY(R[0], fHat, 1e-14);
+  TEST_FLOATING_EQUALITY(R[1], 200.0 * 0.05 * (-1.0), 1e-13);
+  // Against the tool's motion from the other side: u_t = −1.5 is a slip of −0.5: g = −f̂.
+  const double uBack[2] = {-1.5, -0.3};
+  TEST_FLOATING_EQUALITY(wall.tangentialForce(0, V(uBack, pEnd).data()), -fHat, 1e-14);
+  // Too tight a tolerance for this wall: an input error naming the group.
+  m.set("Tangency Tolerance", 1e-3);
+  TEST_THROW(makeMovingWall("Coulomb", 0.2, 0.0, m), InputError);
+  try {
+    makeMovingWall("Coulomb", 0.2, 0.0, m);
+  } catch (const InputError& e) {
+    TEST_ASSERT(std::string(e.what()).find("Boundary Conditions/bottom/Tool Motion") != std::string::npos);
+  }
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, MovingToolStatusesReadTheRelativeNormalVelocity) {
+  // A free node moving along with a tool whose velocity has a normal part does not penetrate it:
+  // u = v_w at node 0 (u·n = 0.25 > tolerance for a fixed tool, (u − v_w)·n = 0 for this one).
+  Teuchos::ParameterList m;
+  m.set("Tool Motion", "Rotation");
+  m.set("Angular Velocity", 0.5);
+  m.set("Rotation Centre X", 0.5);
+  m.set("Rotation Centre Y", -2.0);
+  m.set("Tangency Tolerance", 0.2);
+  ContactWall moving = makeMovingWall("Coulomb", 0.2, 0.0, m);
+  ContactWall fixed = makeWall("Coulomb", 0.2);
+  const std::vector<double> p = {0.0, 0.0, 0.0};
+  const std::vector<std::array<double, 2>> u = {moving.wallVelocity(0), moving.wallVelocity(1), moving.wallVelocity(2)};
+  for (ContactWall* w : {&moving, &fixed})
+    for (int k = 0; k < 3; ++k) w->setActive(k, false);
+  TEST_EQUALITY(moving.nextChange(p, u, 1e-6, 1e-6, 10).node, -1);
+  TEST_EQUALITY(fixed.nextChange(p, u, 1e-6, 1e-6, 10).node, 0);  // u·n = 0.25 at node 0
+  // Complementarity reads the same: nobody presses on the moving tool.
+  moving.enterComplementarity();
+  moving.readContact(u);
+  for (int k = 0; k < 3; ++k) TEST_ASSERT(!moving.isActive(k));
+}
+
+TEUCHOS_UNIT_TEST(ContactWall, MovingToolTangentMatchesFiniteDifferences) {
+  // checkTangent's states, read relative to a tool moving at 0.3 along t: slip 0.2 and 1e-4 − 0.3
+  // (slip), and 0.3 + 1e-4 (stick).
+  const double p[3] = {1.0, 2.0, 4.0};
+  const double slip[2] = {0.5, 0.02}, slipBack[2] = {1e-4, 0.003}, stick[2] = {0.3 + 1e-4, 0.003};
+  for (const char* law : {"Coulomb", "Tresca", "Orowan", "Norton"}) {
+    out << law << "\n";
+    const ContactWall wall = makeMovingWall(law, 0.2, 0.5, translation(0.3));
+    checkTangent(wall, 1, slip, p, out, success);
+    checkTangent(wall, 1, slipBack, p, out, success);
+    checkTangent(wall, 1, stick, p, out, success);
+    FrictionBranch branch;
+    wall.tangentialForce(1, wall.frictionParameters(), V(stick, p).data(), &branch);
+    if (std::string(law) != "Norton") TEST_ASSERT(branch == FrictionBranch::Stick);
+  }
+}
+
 }  // namespace

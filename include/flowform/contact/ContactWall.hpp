@@ -1,9 +1,14 @@
 // A frictional contact wall on a named boundary group (docs/theory.md §2, paper §2.1): a tool
-// fixed in space, acting on the wall's nodes with no extra unknowns.
+// whose surface stays in place (fixed, or moving tangentially to itself: Tool Motion,
+// ToolMotion.hpp), acting on the wall's nodes with no extra unknowns.
 //
-// On an ACTIVE node k with outward normal n_k (material → tool), tangent t_k = (−n_y, n_x):
-//   normal penalty (paper eq. 16):  R_k += α_n (u_k·n_k) n_k
-//   friction (eq. 17–19):           R_k += g_k t_k,  g_k the tangential force opposing u_t = u_k·t_k
+// On an ACTIVE node k with outward normal n_k (material → tool), tangent t_k = (−n_y, n_x) and
+// the tool's surface velocity v_k = v_w(x_k) (0 for a fixed tool):
+//   normal penalty (paper eq. 16):  R_k += α_n ((u_k − v_k)·n_k) n_k
+//   friction (eq. 17–19):           R_k += g_k t_k,  g_k the tangential force opposing the
+//                                   relative slip u_t = (u_k − v_k)·t_k
+// Below, u·n and u_t always mean the velocities relative to the tool, (u − v_w)·n and
+// (u − v_w)·t: the status criteria, the complementarity and the laws all read them.
 // with α_n = κ_n μ_k W_k, α_t = κ_t μ_k W_k (κ dimensionless input factors, μ_k the largest
 // cell viscosity at the node, W_k = 2π r_k axisymmetric, 1 in plane strain): the penalties
 // scale with the bulk stiffness, so one default works across scenes.
@@ -77,6 +82,25 @@ class ContactWall {
     const auto& n = m_curve.normals[k];
     return (m_toolCoords[k][0] - m_coords[k][0]) * n[0] + (m_toolCoords[k][1] - m_coords[k][1]) * n[1];
   }
+  /// The tool's surface velocity v_w at node k (0 for a fixed tool), and its components along
+  /// the node's normal and tangent.
+  const std::array<double, 2>& wallVelocity(int k) const { return m_wallVelocity[k]; }
+  double wallNormalSpeed(int k) const { return m_wallNormalSpeed[k]; }
+  double wallTangentialSpeed(int k) const { return m_wallTangentialSpeed[k]; }
+  const ToolMotion& motion() const { return m_settings.motion; }
+  /// (u − v_w)·n at node k, u the node's velocity: > 0 moves into the tool.
+  template <typename Scalar>
+  Scalar relativeNormalVelocity(int k, const Scalar* u) const {
+    const auto& n = m_curve.normals[k];
+    return n[0] * u[0] + n[1] * u[1] - m_wallNormalSpeed[k];
+  }
+  double relativeNormalVelocity(int k, const std::array<double, 2>& u) const { return relativeNormalVelocity(k, u.data()); }
+  /// The relative slip (u − v_w)·t at node k, t = (−n_y, n_x): what the friction laws act on.
+  template <typename Scalar>
+  Scalar relativeSlip(int k, const Scalar* u) const {
+    const auto& n = m_curve.normals[k];
+    return -n[1] * u[0] + n[0] * u[1] - m_wallTangentialSpeed[k];
+  }
   /// Consecutive wall nodes, which the friction law couples (for the DofMap).
   std::vector<std::array<GO, 2>> couplings() const;
 
@@ -145,8 +169,11 @@ class ContactWall {
   /// entering the tool: a free node penetrates only if u·n > tolerance for this wall's normal
   /// AND for each normal added here (the tool is the intersection of the half-planes).
   /// With Convex Corners = Closed the node is held instead: active, and never released.
-  void addCornerNormal(int k, const std::array<double, 2>& otherNormal) {
+  /// `otherSpeed` is the other tool's v_w·n there (the penetration test is on (u − v_w)·n of
+  /// each tool).
+  void addCornerNormal(int k, const std::array<double, 2>& otherNormal, double otherSpeed = 0.0) {
     m_cornerNormals[k].push_back(otherNormal);
+    m_cornerSpeeds[k].push_back(otherSpeed);
     if (m_settings.closedCorners) m_active[k] = kActive;
   }
   /// Whether node k is held active (no status change): at a closed convex corner, or, on a wall
@@ -300,6 +327,12 @@ class ContactWall {
   template <typename Scalar>
   Scalar contactMeasure(int j, const Scalar* uj, bool& inContact) const;
   double weight(int k) const;  ///< W_k: 2π r_k or 1
+  /// Reads Tool Motion and its entries from the validated `list` (`given`: the case's own entries,
+  /// for the warnings); InputError naming the group for a rotation in axisymmetry or a radial
+  /// axisymmetric translation.
+  void readToolMotion(const std::string& group, const Teuchos::ParameterList& given, const Teuchos::ParameterList& list);
+  /// InputError naming the group when a moving tool is not tangential to its own segments.
+  void checkTangency(const std::string& group) const;
 
   BoundaryCurve m_curve;
   ContactWallSettings m_settings;
@@ -310,6 +343,10 @@ class ContactWall {
   bool m_complementarity = false;
   std::vector<int> m_changes;
   std::vector<std::vector<std::array<double, 2>>> m_cornerNormals;
+  std::vector<std::vector<double>> m_cornerSpeeds;  ///< the other tool's v_w·n, per corner normal
+  /// The tool's surface velocity at each node and its normal and tangential components.
+  std::vector<std::array<double, 2>> m_wallVelocity;
+  std::vector<double> m_wallNormalSpeed, m_wallTangentialSpeed;
   bool m_firstIsUpstream = true;  ///< firstNodeIsUpstream()
   int m_upstreamEnd = -1;  ///< Released Nodes = Free Surface: the wall node shared with the Start Group
   std::vector<double> m_viscosity, m_flowStress;
@@ -333,8 +370,7 @@ inline double ContactWall::weight(int k) const {
 
 template <typename Scalar>
 Scalar ContactWall::contactMeasure(int j, const Scalar* uj, bool& inContact) const {
-  const auto& n = m_curve.normals[j];
-  const Scalar g = n[0] * uj[0] + n[1] * uj[1];
+  const Scalar g = relativeNormalVelocity(j, uj);  // (u − v_w)·n
   const double kappa = m_settings.normalPenalty;
   switch (m_active[j]) {
     case kActive:  // held by its status: in contact, φ = its normal reaction (≥ 0)
@@ -343,7 +379,7 @@ Scalar ContactWall::contactMeasure(int j, const Scalar* uj, bool& inContact) con
     case kFree:
       inContact = false;
       return g < 0.0 ? g : Scalar(0.0);
-    default:  // complementarity (and self-deciding) nodes: λ/(μW) = κ_n u·n pressing, u·n separating
+    default:  // complementarity (and self-deciding) nodes: λ/(μW) = κ_n (u − v_w)·n pressing, (u − v_w)·n separating
       inContact = g > 0.0;
       return inContact ? Scalar(kappa * g) : g;
   }
@@ -405,13 +441,13 @@ template <typename Scalar, typename PScalar>
 Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp, const Scalar* v,
                                     FrictionBranch* branch, FrictionDualPoint* dual) const {
   const Scalar* u = v;
-  const auto& n = m_curve.normals[k];
-  const bool separating = m_active[k] == kSelfDeciding && !(n[0] * u[0] + n[1] * u[1] > 0.0);
+  const Scalar un = relativeNormalVelocity(k, u);  // (u − v_w)·n
+  const bool separating = m_active[k] == kSelfDeciding && !(un > 0.0);
   if (m_active[k] == kFree || separating) {
     if (branch) *branch = FrictionBranch::Free;
     return Scalar(0.0);
   }
-  FrictionNodeData<Scalar> d{-n[1] * u[0] + n[0] * u[1],  // u·t, t = (−n_y, n_x)
+  FrictionNodeData<Scalar> d{relativeSlip(k, u),  // (u − v_w)·t, t = (−n_y, n_x)
                              Scalar(0.0), Scalar(0.0), Scalar(0.0),
                              m_settings.tangentialPenalty * m_viscosity[k] * weight(k), dual};
   lumpSegmentIntegrals(k, v, d);
@@ -421,8 +457,8 @@ Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp
     return Scalar(0.0);
   }
   if (m_settings.coulombOnContactForce || m_active[k] == kSelfDeciding) {
-    // N_k = max(α_n u·n, 0): the penalty's normal force on the node (its normal traction, lumped).
-    const Scalar normalForce = m_settings.normalPenalty * m_viscosity[k] * weight(k) * (n[0] * u[0] + n[1] * u[1]);
+    // N_k = max(α_n (u − v_w)·n, 0): the penalty's normal force on the node (its normal traction, lumped).
+    const Scalar normalForce = m_settings.normalPenalty * m_viscosity[k] * weight(k) * un;
     d.pressureIntegral = normalForce > 0.0 ? normalForce : Scalar(0.0);
   }
   const FrictionForce<Scalar> f = frictionForce(m_settings.law, d, fp, m_settings.friction);
@@ -437,9 +473,9 @@ void ContactWall::addNodeResidual(int k, const FrictionParameters<PScalar>& fp, 
   const Scalar* u = v;
   const auto& n = m_curve.normals[k];
   const double alphaN = m_settings.normalPenalty * m_viscosity[k] * weight(k);
-  Scalar un = n[0] * u[0] + n[1] * u[1];
+  Scalar un = relativeNormalVelocity(k, u);  // (u − v_w)·n
   const bool oneSided = m_active[k] == kSelfDeciding || m_active[k] == kComplementary;
-  if (oneSided && !(un > 0.0)) un = Scalar(0.0);  // α_n max(u·n, 0)
+  if (oneSided && !(un > 0.0)) un = Scalar(0.0);  // α_n max((u − v_w)·n, 0)
   R[0] += alphaN * un * n[0];
   R[1] += alphaN * un * n[1];
   const Scalar g = tangentialForce(k, fp, v, nullptr, dual);

@@ -1,10 +1,11 @@
 // What a contact wall's parameter list sets (ContactWall reads it from the case's Contact Wall
 // sublist: its friction law and constants, penalty factors, which nodes may be released, and
-// how its corners and Coulomb bound are treated; docs/theory.md §2, docs/contact.md).
+// how its corners and Coulomb bound are treated, and how its tool moves; docs/theory.md §2, docs/contact.md).
 #pragma once
 
 #include <string>
 
+#include "flowform/contact/ToolMotion.hpp"
 #include "flowform/contact/friction/FrictionLaw.hpp"
 
 namespace flowform {
@@ -29,6 +30,10 @@ struct ContactWallSettings {
   /// Coulomb Normal Force = Contact Force: the Coulomb bound is ν max(α_n u·n, 0) (the penalty's
   /// normal force) instead of ν ∫ N_k p⁺ ds.
   bool coulombOnContactForce = false;
+  /// Tool Motion: the tool's surface velocity v_w (Fixed: 0).
+  ToolMotion motion;
+  /// Tangency Tolerance: the largest |v_w·n|/|v_w| accepted on the wall's segments.
+  double tangencyTolerance = 1e-3;
 };
 
 }  // namespace flowform

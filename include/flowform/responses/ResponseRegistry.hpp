@@ -29,6 +29,8 @@
 #include "flowform/responses/MeanPressure.hpp"
 #include "flowform/responses/ShearAngle.hpp"
 #include "flowform/responses/ThicknessRatio.hpp"
+#include "flowform/responses/ToolPower.hpp"
+#include "flowform/responses/ToolTorque.hpp"
 #include "flowform/responses/WallGap.hpp"
 #include "flowform/responses/WallPowers.hpp"
 
@@ -41,7 +43,7 @@ using ResponseList = TypeList<Types...>;
 using RegisteredResponses =
     ResponseList<BoundaryForce, MeanPressure, BoundaryPower, FlowRate, PlasticPower, FrictionPower, PenaltyPower,
                  StabilizationPower, DeadZone, BoundaryExtent, WallGap, ContactLength, WallForce, ThicknessRatio,
-                 ShearAngle>;
+                 ShearAngle, ToolPower, ToolTorque>;
 
 /// A type's static facts, by its index in RegisteredResponses.
 struct ResponseTypeInfo {

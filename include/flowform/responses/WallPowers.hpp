@@ -1,11 +1,14 @@
 // The responses summed node by node over the contact walls (each node by its owner), from the
-// wall's part of the momentum residual R_k = α_n (u·n) n + g t (normal penalty and friction):
+// wall's part of the momentum residual R_k = α_n ((u − v_w)·n) n + g t (normal penalty and friction;
+// v_w the tool's surface velocity, 0 for a fixed tool):
 //   Wall Force      Σ R_k on the named wall (component X or Y): the force the material exerts on
 //                   it, a tool's cutting (X) and thrust (Y) forces; by the balance of the whole
 //                   body, the sum of the Boundary Forces on the velocity-driven groups when the
 //                   rest is traction-free
-//   Friction Power  Σ g_k u_t,k over the active nodes of every wall: the friction dissipation
-//   Penalty Power   Σ (normal part of R_k)·u = α_n (u·n)²: the work of the normal penalty
+//   Friction Power  Σ g_k (u − v_w)·t_k over the active nodes of every wall: the friction
+//                   dissipation (g_k times the relative slip)
+//   Penalty Power   Σ (normal part of R_k)·(u − v_w) = α_n ((u − v_w)·n)²: the work of the normal penalty
+// A moving tool's own power and torque are Tool Power and Tool Torque (their own files).
 #pragma once
 
 #include "flowform/responses/ResponseContext.hpp"
@@ -70,7 +73,8 @@ struct WallForce {
 
 struct FrictionPower {
   static constexpr const char* kName = "Friction Power";
-  static constexpr const char* kDescription = "sum over active wall nodes of g_k u_t,k: the friction dissipation";
+  static constexpr const char* kDescription =
+      "sum over active wall nodes of g_k (u - v_w).t_k (the relative slip): the friction dissipation";
   static constexpr bool kNeedsBoundary = false, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
                         kDifferentiable = true;
 
@@ -81,9 +85,8 @@ struct FrictionPower {
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
     return sumOverWallNodes(c, "", [&](Scalar& local, const ContactWall& wall, int k,
                                        const FrictionParameters<Scalar>& fp, const Scalar* u, const Scalar*) {
-      const auto& nk = wall.curve().normals[k];
       const Scalar g = wall.tangentialForce(k, fp, u);
-      local += g * (-nk[1] * u[0] + nk[0] * u[1]);
+      local += g * wall.relativeSlip(k, u);
     });
   }
 };
@@ -91,7 +94,7 @@ struct FrictionPower {
 struct PenaltyPower {
   static constexpr const char* kName = "Penalty Power";
   static constexpr const char* kDescription =
-      "sum over active wall nodes of alpha_n (u.n)^2: the work of the normal penalty";
+      "sum over active wall nodes of alpha_n ((u - v_w).n)^2: the work of the normal penalty";
   static constexpr bool kNeedsBoundary = false, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
                         kDifferentiable = true;
 
@@ -103,8 +106,9 @@ struct PenaltyPower {
     return sumOverWallNodes(c, "", [&](Scalar& local, const ContactWall& wall, int k,
                                        const FrictionParameters<Scalar>& fp, const Scalar* u, const Scalar* Rk) {
       const auto& nk = wall.curve().normals[k];
+      const auto& vw = wall.wallVelocity(k);
       const Scalar g = wall.tangentialForce(k, fp, u);
-      local += (Rk[0] + g * nk[1]) * u[0] + (Rk[1] - g * nk[0]) * u[1];
+      local += (Rk[0] + g * nk[1]) * (u[0] - vw[0]) + (Rk[1] - g * nk[0]) * (u[1] - vw[1]);
     });
   }
 };
