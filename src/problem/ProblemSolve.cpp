@@ -6,6 +6,7 @@
 #include "flowform/core/Budget.hpp"
 #include "flowform/contact/WallStates.hpp"
 #include "flowform/core/Log.hpp"
+#include "flowform/core/ParameterRamp.hpp"
 #include "flowform/discretization/SolutionTransfer.hpp"
 #include "flowform/problem/Problem.hpp"
 
@@ -155,30 +156,29 @@ bool Problem::continueInFriction(NonlinearSolver& solver, const Vector& initial)
   }
   NewtonOptions options;
   options.restart = false;
-  double step = s;  // the next increase of the scale
-  while (r.converged && s < 1.0 && !budgetWasSpent()) {
+  ParameterRamp ramp{s, s};
+  while (r.converged && !ramp.reachedEnd() && !budgetWasSpent()) {
     const Vector last(*m_solution, Teuchos::Copy);
-    const double next = std::min(1.0, s + step);
+    const double next = ramp.next();
     scale(next);
     const SolveReport raised = solver.resolve(*m_solution, m_physics, options);
     iterations += raised.newtonIterations;
     log() << "  friction scale " << next << ": " << (raised.converged ? "converged" : "failed") << " in "
           << raised.newtonIterations << " Newton iteration(s)\n";
     if (raised.converged) {
-      s = next;
-      step *= 2.0;
+      ramp.accept(next);
       r.residualNorm = raised.residualNorm;
       continue;
     }
     Tpetra::deep_copy(*m_solution, last);
-    step = (next - s) / 2.0;
-    if (step < kFrictionContinuationStart / 64.0) {
+    ramp.reject(next);
+    if (ramp.step < kFrictionContinuationStart / 64.0) {
       r.converged = false;
-      r.message = raised.message + " (friction continuation stalled at scale " + std::to_string(s) + ")";
+      r.message = raised.message + " (friction continuation stalled at scale " + std::to_string(ramp.t) + ")";
     }
   }
   scale(1.0);
-  if (!r.converged || s < 1.0) {
+  if (!r.converged || !ramp.reachedEnd()) {
     m_report = failed;
     m_report.newtonIterations = iterations;
     if (!r.message.empty()) m_report.message = r.message;

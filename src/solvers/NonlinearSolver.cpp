@@ -17,6 +17,7 @@
 
 #include "flowform/core/Budget.hpp"
 #include "flowform/core/Log.hpp"
+#include "flowform/core/ParameterRamp.hpp"
 #include "flowform/solvers/FlowGroup.hpp"
 #include "flowform/solvers/NewtonStatusTests.hpp"
 #include "flowform/solvers/LinearSolverRegistry.hpp"
@@ -326,11 +327,10 @@ bool NonlinearSolver::residualHomotopy(Vector& x, const Vector& start, const Flo
   const double norm0 = r0.norm2();
   if (!std::isfinite(norm0)) return false;
   log() << "  re-solve failed; following F(x) = (1 - t) F(x0) from t = 0 at the start\n";
-  double t = 0.0, step = kFirstHomotopyStep;
-  int failures = 0;
-  while (t < 1.0 && failures <= kMaxHomotopyFailures && !budgetWasSpent()) {
+  ParameterRamp ramp{0.0, kFirstHomotopyStep};
+  while (!ramp.reachedEnd() && ramp.failures <= kMaxHomotopyFailures && !budgetWasSpent()) {
     const Vector last(x, Teuchos::Copy);
-    const double next = std::min(1.0, t + step);
+    const double next = ramp.next();
     m_model.setResidualShift(&r0, 1.0 - next);
     NewtonOptions stage;
     stage.continuing = true;  // the scales of x0; the duals go on from the last stage
@@ -342,17 +342,15 @@ bool NonlinearSolver::residualHomotopy(Vector& x, const Vector& start, const Flo
     log() << "  homotopy t = " << next << ": " << (sr.converged ? "converged" : "failed") << " in "
           << sr.newtonIterations << " Newton iteration(s)\n";
     if (sr.converged) {
-      t = next;
-      step *= 2.0;
+      ramp.accept(next);
       report.residualNorm = sr.residualNorm;
     } else {
       Tpetra::deep_copy(x, last);
       m_model.restartLinearization();
-      step = (next - t) / 2.0;
-      ++failures;
+      ramp.reject(next);
     }
   }
-  if (t < 1.0) {
+  if (!ramp.reachedEnd()) {
     Tpetra::deep_copy(x, start);
     return false;
   }
