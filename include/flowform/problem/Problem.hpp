@@ -88,8 +88,10 @@ class Problem {
   SurfaceLinearizationState linearizationState();
 
   /// Contact/Status Update = Complementarity: from the converged first solve, the walls decide
-  /// their contact zones inside Newton; if that fails, the status loop decides them.
-  void enterComplementarity(NonlinearSolver& solver);
+  /// their contact zones inside Newton; if that fails, the status loop decides them. With
+  /// `looseStart` (the first solve stopped at kLooseFirstSolve) a failure first converges the
+  /// first solve tightly and tries once more from there.
+  void enterComplementarity(NonlinearSolver& solver, bool looseStart = false);
   /// The relative residual at which the first solve stops when enterComplementarity follows
   /// (measured on the extrusion's fixed meshes (0.1, 0.025) … (0.025, 0.001): 1e-2 takes 18–21
   /// Newton iterations in all where 1e-3 took 19–23, the same contact states, F equal to 10⁻⁶;
