@@ -63,6 +63,7 @@ const SolveReport& Problem::solve() {
   if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) m_report.message += firstSolveHints();
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
+  if (m_report.converged && !m_bcs->rigidInflow().group.empty()) balanceRigidInflow(solver);
   if (m_report.converged && !m_freeSurfaces->empty()) {
     loopFreeSurfaces(solver, {m_report.unsettledContacts, m_report.unsettledContactRatio}, "");
     if (m_report.converged && m_bcs->releaseHeld(m_mesh)) releaseHeldAndGoOn(solver);

@@ -65,6 +65,12 @@ static void buildValidParameters(const ValidList& valid) {
              "finite-difference run: when spent, the run ends not converged (exit 3) with the last state written and "
              "the message saying where it was (docs/theory.md §5)",
              nonNegative());
+  valid->set("Rigid Inflow Tolerance", 1e-7,
+             "a Rigid Inflow group's speed is found when its force balance |d·Σ R_i| is at most this × Σ|R_i| over "
+             "every node with a prescribed component (Problem::balanceRigidInflow, docs/rolling.md)",
+             inRange(1e-14, 1.0));
+  valid->set("Rigid Inflow Max Solves", 40, "re-solves at most while a Rigid Inflow group's speed is sought",
+             intInRange(1, 10000));
   valid->set("Absolute Residual Tolerance", 1e-10, "||F||_2 below this is converged", nonNegative());
   valid->set("Relative Residual Tolerance", 1e-9, "||F||_2 / ||F_0||_2 below this is converged",
              inRange(0.0, 1.0, false, true));

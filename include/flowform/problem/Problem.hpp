@@ -39,6 +39,17 @@
 
 namespace flowform {
 
+/// What the search for a Rigid Inflow's speed did (Problem::balanceRigidInflow).
+struct RigidInflowReport {
+  std::string group;  ///< empty: no rigid inflow
+  double startSpeed = 0.0, speed = 0.0;
+  double force = 0.0;       ///< d·Σ R_i at the final speed (0 at balance)
+  double forceScale = 0.0;  ///< Σ|R_i| over the nodes with a prescribed component
+  int solves = 0, newtonIterations = 0;
+  bool converged = false;
+  std::vector<std::array<double, 2>> history;  ///< (U, force) of every trial speed
+};
+
 class Problem {
  public:
   /// Reads the mesh of the validated case `caseParams` (relative paths against `baseDir`) and
@@ -129,6 +140,7 @@ class Problem {
   const SolveReport& report() const { return m_report; }
   int contactChanges() const { return m_contactChanges; }
   const FreeSurfaceReport& freeSurfaceReport() const { return m_freeSurfaceReport; }
+  const RigidInflowReport& rigidInflowReport() const { return m_rigidInflowReport; }
 
  private:
   /// Penalty scales of every wall from the state x.
@@ -137,6 +149,12 @@ class Problem {
   /// the flow is re-solved and the free-surface loop goes on from the converged shape; its report
   /// continues the held loop's (FreeSurfaceReport::continueFrom).
   void releaseHeldAndGoOn(NonlinearSolver& solver);
+  /// A Rigid Inflow group (BoundaryConditions::rigidInflow): its speed U is sought until the group's
+  /// reaction along its direction balances its traction load, each trial speed a converged re-solve
+  /// with the contact statuses (problem/RigidInflowBalance.cpp). Failure (no root: the roll cannot
+  /// draw the strip in; a re-solve that fails) makes the solve unconverged with the reason.
+  void balanceRigidInflow(NonlinearSolver& solver);
+
   /// The free-surface loop on the problem's own state (convergeFreeSurfaces): its report is
   /// m_freeSurfaceReport, its Newton iterations and changes add to the solve's, and a failure makes
   /// the solve unconverged, `context` prefixed to its message.
@@ -163,6 +181,7 @@ class Problem {
   SolveReport m_report;
   int m_contactChanges = 0;
   FreeSurfaceReport m_freeSurfaceReport;
+  RigidInflowReport m_rigidInflowReport;
 };
 
 }  // namespace flowform

@@ -1,0 +1,180 @@
+// Problem::balanceRigidInflow: the speed of a group that moves as one rigid body (docs/rolling.md,
+// docs/theory.md §2 "Rigid inflow").
+//
+// The group Γ_in is the cut through a rigid body upstream (a rolled strip before the bite): on it
+// u = U d, d the given direction, U one unknown shared by all its nodes. The equation that closes
+// the system is the force balance of that rigid body: the force the model's material needs at the
+// cut along d equals the load the body carries (its traction t̄, a back tension),
+//
+//   F(U) = d · Σ_{i ∈ Γ_in} R_i(q(U)) = 0,    R_i = the unconstrained momentum residual at node i
+//                                              (it holds −∫ N_i t̄ ds: the traction load),
+//
+// q(U) the converged flow (with its contact statuses) at the prescribed speed U. This is the
+// bordered system [f(q, U) = 0, F(q) = 0] with the one extra unknown eliminated by an outer scalar
+// iteration instead of a bordered Newton: F(U) is continuous and, for a strip driven by friction,
+// increasing (a faster strip moves the neutral point towards the entry: more of the arc drags it
+// back), but only piecewise smooth (each wall node that crosses the stick zone adds a kink), and
+// Newton's tangent at fixed statuses sees only the smooth part of its slope (a Coulomb node in slip
+// has no tangential stiffness) — measured on xml/rolling.xml: the monolithic Newton from a released
+// inlet diverged, its first step |dx| ~ 10³. Here: bracket the root by steps that double, then
+// Illinois false position, each trial a warm re-solve from the last state.
+//
+// No root below: when F stays > 0 (the material must be pushed in) as U falls to 10⁻³ of its
+// start, the tool cannot draw it in (a roll that slips over the whole arc: ν below the steady
+// rolling limit); the solve ends unconverged saying so.
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "flowform/core/Budget.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/problem/Problem.hpp"
+
+namespace flowform {
+
+namespace {
+
+std::string number(double v) {
+  std::ostringstream os;
+  os << std::setprecision(4) << v;
+  return os.str();
+}
+
+}  // namespace
+
+void Problem::balanceRigidInflow(NonlinearSolver& solver) {
+  const RigidInflow& inflow = m_bcs->rigidInflow();
+  const Teuchos::ParameterList& solverList = m_params.sublist("Solver");
+  const double tolerance = solverList.get<double>("Rigid Inflow Tolerance");
+  const int maxSolves = solverList.get<int>("Rigid Inflow Max Solves");
+  RigidInflowReport& rep = m_rigidInflowReport;
+  rep = RigidInflowReport{};
+  rep.group = inflow.group;
+  rep.startSpeed = rep.speed = inflow.speed;
+  const std::array<double, 2> d = inflow.direction;
+  const BoundaryCurve curve = buildBoundaryCurve(m_mesh, m_mesh.boundary(inflow.group));
+
+  // F(U) at the current state, and the force scale Σ|R_i| over the nodes with a prescribed component.
+  auto force = [&](double& scale) {
+    Vector r(m_dofMap->ownedMap());
+    m_assembler->residual(*m_solution, r, false);
+    auto view = r.getLocalViewHost(Tpetra::Access::ReadOnly);
+    double local[2] = {0.0, 0.0};
+    for (GO node : curve.nodes) {
+      const LO n = m_dofMap->overlapIndex(node);
+      if (!m_dofMap->ownsNode(n)) continue;
+      local[0] += d[0] * view(m_dofMap->dof(n, kUx), 0) + d[1] * view(m_dofMap->dof(n, kUy), 0);
+    }
+    const auto& constraints = m_bcs->constraints();
+    for (LO n = 0; n < m_dofMap->numOwnedNodes(); ++n)
+      if (constraints[n].kind != NodeConstraint::Kind::None)
+        local[1] += std::hypot(view(m_dofMap->dof(n, kUx), 0), view(m_dofMap->dof(n, kUy), 0));
+    double global[2];
+    Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, 2, local, global);
+    scale = global[1];
+    return global[0];
+  };
+  // The converged flow at speed U from the last state; false when the re-solve failed.
+  std::string failure;
+  auto solveAt = [&](double U) {
+    m_bcs->setRigidInflowSpeed(m_mesh, U);
+    m_bcs->imposeOnSolution(*m_solution);
+    for (ContactWall& wall : m_walls) wall.resetChangeCounts();
+    NewtonOptions options;
+    options.reuseFactors = true;
+    SolveReport r = solver.resolve(*m_solution, m_physics, options);
+    if (r.converged && !m_walls.empty()) m_contactChanges += m_statusLoop->run(solver, *m_solution, m_physics, m_walls, r);
+    ++rep.solves;
+    rep.newtonIterations += r.newtonIterations;
+    m_report.newtonIterations += r.newtonIterations;
+    m_report.newtonPerSolve.push_back(r.newtonIterations);
+    if (!r.converged) failure = r.message;
+    return r.converged;
+  };
+  auto fail = [&](const std::string& why) {
+    rep.converged = false;
+    m_report.converged = false;
+    m_report.message = "Rigid Inflow '" + inflow.group + "': " + why;
+    warn() << "flowform: " << m_report.message << "\n";
+  };
+
+  double scale = 0.0;
+  double Fa = force(scale), Ua = inflow.speed;
+  rep.history.push_back({Ua, Fa});
+  auto done = [&](double F) { return std::abs(F) <= tolerance * scale; };
+  log() << "rigid inflow '" << inflow.group << "': U = " << number(Ua) << ", force " << number(Fa) << " (scale "
+        << number(scale) << ")\n";
+  const double U0 = Ua;
+  double Ub = Ua, Fb = Fa;
+  // Bracket: F < 0 (the body must be held back) → faster; F > 0 (pushed) → slower.
+  if (!done(Fa)) {
+    const double dir = Fa < 0.0 ? 1.0 : -1.0;
+    double step = 0.05 * U0;
+    while (true) {
+      if (rep.solves >= maxSolves) return fail("no bracket of the balance in " + std::to_string(maxSolves) +
+                                               " solves (Solver/Rigid Inflow Max Solves)");
+      if (budgetSpent()) return fail(budgetMessage());
+      double U = Ua + dir * step;
+      if (dir < 0.0 && U <= 1e-3 * U0) U = 0.5 * Ua;
+      if (dir < 0.0 && Ua <= 1e-3 * U0) {
+        std::ostringstream os;
+        os << "the material must still be pushed in at speed " << number(Ua) << " (force " << number(Fa)
+           << " along the inflow, started at " << number(U0)
+           << "): the tools cannot draw it in — a roll whose friction cannot balance the pressure on its arc "
+              "slips over the whole arc (Friction Coefficient too small for the bite, or too much back tension; "
+              "docs/rolling.md)";
+        return fail(os.str());
+      }
+      if (!solveAt(U)) return fail("the re-solve at speed " + number(U) + " failed: " + failure);
+      const double F = force(scale);
+      rep.history.push_back({U, F});
+      log() << "rigid inflow: U = " << number(U) << ", force " << number(F) << "\n";
+      Ub = U;
+      Fb = F;
+      if (done(F) || (F > 0.0) != (Fa > 0.0)) break;
+      Ua = U;
+      Fa = F;
+      step *= 2.0;
+    }
+  }
+  // Illinois false position on [Ua, Ub] (F of opposite signs), unless the last trial is the root.
+  double Flast = Fb;
+  int side = 0;
+  while (!done(Flast)) {
+    if (rep.solves >= maxSolves)
+      return fail("the force balance " + number(Flast) + " is above its tolerance " + number(tolerance * scale) +
+                  " after " + std::to_string(maxSolves) + " solves (Solver/Rigid Inflow Max Solves)");
+    if (budgetSpent()) return fail(budgetMessage());
+    const double U = (Ua * Fb - Ub * Fa) / (Fb - Fa);
+    if (!solveAt(U)) return fail("the re-solve at speed " + number(U) + " failed: " + failure);
+    const double F = force(scale);
+    rep.history.push_back({U, F});
+    log() << "rigid inflow: U = " << std::setprecision(10) << U << ", force " << std::setprecision(4) << F << "\n";
+    Flast = F;
+    if ((F > 0.0) == (Fb > 0.0)) {  // U replaces Ub; Ua kept (its weight halved when kept twice)
+      Ub = U;
+      Fb = F;
+      if (side == -1) Fa *= 0.5;
+      side = -1;
+    } else {
+      Ua = U;
+      Fa = F;
+      if (side == 1) Fb *= 0.5;
+      side = 1;
+    }
+    if (std::abs(Ub - Ua) <= 1e-14 * std::abs(Ub)) break;
+  }
+  Fb = Flast;
+  // The state is the last solve's (at Ub).
+  rep.speed = m_bcs->rigidInflow().speed;
+  rep.force = Fb;
+  rep.forceScale = scale;
+  rep.converged = done(Fb);
+  if (!rep.converged)
+    return fail("the force balance " + number(Fb) + " stalls above its tolerance " + number(tolerance * scale));
+  log() << "rigid inflow '" << inflow.group << "': speed " << std::setprecision(10) << rep.speed << std::setprecision(6)
+        << " (force " << Fb << ", " << rep.solves << " re-solves, " << rep.newtonIterations
+        << " Newton iterations)\n";
+}
+
+}  // namespace flowform
