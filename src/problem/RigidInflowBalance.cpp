@@ -42,13 +42,12 @@ std::string number(double v) {
 
 }  // namespace
 
-void Problem::balanceRigidInflow(NonlinearSolver& solver) {
+RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics) {
   const RigidInflow& inflow = m_bcs->rigidInflow();
   const Teuchos::ParameterList& solverList = m_params.sublist("Solver");
   const double tolerance = solverList.get<double>("Rigid Inflow Tolerance");
   const int maxSolves = solverList.get<int>("Rigid Inflow Max Solves");
-  RigidInflowReport& rep = m_rigidInflowReport;
-  rep = RigidInflowReport{};
+  RigidInflowReport rep;
   rep.group = inflow.group;
   rep.startSpeed = rep.speed = inflow.speed;
   const std::array<double, 2> d = inflow.direction;
@@ -57,12 +56,12 @@ void Problem::balanceRigidInflow(NonlinearSolver& solver) {
   // F(U) at the current state, and the force scale Σ|R_i| over the nodes with a prescribed component.
   auto force = [&](double& scale) {
     Vector r(m_dofMap->ownedMap());
-    m_assembler->residual(*m_solution, r, false);
+    m_assembler->residual(x, r, false);
     auto view = r.getLocalViewHost(Tpetra::Access::ReadOnly);
     double local[2] = {0.0, 0.0};
     for (GO node : curve.nodes) {
       const LO n = m_dofMap->overlapIndex(node);
-      if (!m_dofMap->ownsNode(n)) continue;
+      if (n < 0 || !m_dofMap->ownsNode(n)) continue;
       local[0] += d[0] * view(m_dofMap->dof(n, kUx), 0) + d[1] * view(m_dofMap->dof(n, kUy), 0);
     }
     const auto& constraints = m_bcs->constraints();
@@ -78,24 +77,25 @@ void Problem::balanceRigidInflow(NonlinearSolver& solver) {
   std::string failure;
   auto solveAt = [&](double U) {
     m_bcs->setRigidInflowSpeed(m_mesh, U);
-    m_bcs->imposeOnSolution(*m_solution);
+    m_bcs->imposeOnSolution(x);
     for (ContactWall& wall : m_walls) wall.resetChangeCounts();
     NewtonOptions options;
     options.reuseFactors = true;
-    SolveReport r = solver.resolve(*m_solution, m_physics, options);
-    if (r.converged && !m_walls.empty()) m_contactChanges += m_statusLoop->run(solver, *m_solution, m_physics, m_walls, r);
+    SolveReport r = solver.resolve(x, physics, options);
+    if (r.converged && !m_walls.empty()) rep.contactChanges += m_statusLoop->run(solver, x, physics, m_walls, r);
     ++rep.solves;
     rep.newtonIterations += r.newtonIterations;
-    m_report.newtonIterations += r.newtonIterations;
-    m_report.newtonPerSolve.push_back(r.newtonIterations);
+    rep.newtonPerSolve.push_back(r.newtonIterations);
     if (!r.converged) failure = r.message;
     return r.converged;
   };
   auto fail = [&](const std::string& why) {
+    rep.speed = m_bcs->rigidInflow().speed;
+    if (!rep.history.empty()) rep.force = rep.history.back()[1];
     rep.converged = false;
-    m_report.converged = false;
-    m_report.message = "Rigid Inflow '" + inflow.group + "': " + why;
-    warn() << "flowform: " << m_report.message << "\n";
+    rep.message = "Rigid Inflow '" + inflow.group + "': " + why;
+    warn() << "flowform: " << rep.message << "\n";
+    return rep;
   };
 
   double scale = 0.0;
@@ -175,6 +175,52 @@ void Problem::balanceRigidInflow(NonlinearSolver& solver) {
   log() << "rigid inflow '" << inflow.group << "': speed " << std::setprecision(10) << rep.speed << std::setprecision(6)
         << " (force " << Fb << ", " << rep.solves << " re-solves, " << rep.newtonIterations
         << " Newton iterations)\n";
+  return rep;
+}
+
+void Problem::balanceRigidInflow(NonlinearSolver& solver) {
+  m_rigidInflowReport = balanceRigidInflow(solver, *m_solution, m_physics);
+  const RigidInflowReport& rep = m_rigidInflowReport;
+  m_contactChanges += rep.contactChanges;
+  m_report.newtonIterations += rep.newtonIterations;
+  for (int n : rep.newtonPerSolve) m_report.newtonPerSolve.push_back(n);
+  if (!rep.converged) {
+    m_report.converged = false;
+    m_report.message = rep.message;
+  }
+}
+
+void Problem::setRigidInflowSpeed(double speed) { m_bcs->setRigidInflowSpeed(m_mesh, speed); }
+
+std::optional<RigidInflowLinearization> Problem::rigidInflowLinearization() {
+  const RigidInflow inflow = m_bcs->rigidInflow();
+  if (inflow.group.empty()) return std::nullopt;
+  RigidInflowLinearization lin;
+  // −∂f/∂U = f(q; U) − f(q; U + 1): f is affine in U (the prescribed values of the group's rows).
+  lin.minusDfDU = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
+  Vector shifted(m_dofMap->ownedMap());
+  m_assembler->residual(*m_solution, *lin.minusDfDU);
+  m_bcs->setRigidInflowSpeed(m_mesh, inflow.speed + 1.0);
+  m_assembler->residual(*m_solution, shifted);
+  m_bcs->setRigidInflowSpeed(m_mesh, inflow.speed);
+  lin.minusDfDU->update(-1.0, shifted, 1.0);
+  // dF = d · Σ_{i ∈ group} dR_i, dR the unconstrained residual's tangent along (dq, h).
+  const BoundaryCurve curve = buildBoundaryCurve(m_mesh, m_mesh.boundary(inflow.group));
+  lin.dForce = [this, curve, d = inflow.direction](const Vector& dq, const SensitivityParameter* h) {
+    Vector dR(m_dofMap->ownedMap());
+    m_assembler->tangent(*m_solution, &dq, h, dR, false);
+    auto view = dR.getLocalViewHost(Tpetra::Access::ReadOnly);
+    double local = 0.0;
+    for (GO node : curve.nodes) {
+      const LO n = m_dofMap->overlapIndex(node);
+      if (n < 0 || !m_dofMap->ownsNode(n)) continue;
+      local += d[0] * view(m_dofMap->dof(n, kUx), 0) + d[1] * view(m_dofMap->dof(n, kUy), 0);
+    }
+    double global = 0.0;
+    Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+    return global;
+  };
+  return lin;
 }
 
 }  // namespace flowform

@@ -15,7 +15,9 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,9 +47,20 @@ struct RigidInflowReport {
   double startSpeed = 0.0, speed = 0.0;
   double force = 0.0;       ///< d·Σ R_i at the final speed (0 at balance)
   double forceScale = 0.0;  ///< Σ|R_i| over the nodes with a prescribed component
-  int solves = 0, newtonIterations = 0;
+  int solves = 0, newtonIterations = 0, contactChanges = 0;
+  std::vector<int> newtonPerSolve;
   bool converged = false;
+  std::string message;
   std::vector<std::array<double, 2>> history;  ///< (U, force) of every trial speed
+};
+
+/// A Rigid Inflow's speed U as a sensitivity sees it: the bordered system [f(q, U, h) = 0,
+/// F(q, h) = 0] (F the group's force balance) gives dq/dh = (dq/dh)_U + (dU/dh) g with
+/// K g = −∂f/∂U and dU/dh = −(dF/dh)_U / (dF/dq g) (docs/rolling.md).
+struct RigidInflowLinearization {
+  Teuchos::RCP<Vector> minusDfDU;  ///< −∂f/∂U (owned map): nonzero in the group's constraint rows only
+  /// dF along (dq, h) at the converged state: d·Σ_{i∈group} (∂R_i/∂q dq + ∂R_i/∂h); h null: none.
+  std::function<double(const Vector& dq, const SensitivityParameter* h)> dForce;
 };
 
 class Problem {
@@ -94,6 +107,18 @@ class Problem {
   std::map<std::string, double> evaluateResponses(const Vector& x) const {
     return m_responses->evaluate(x, m_mesh, *m_dofMap, *m_assembler, m_walls);
   }
+
+  /// A Rigid Inflow group (BoundaryConditions::rigidInflow): its speed U is sought from the converged
+  /// flow x at `physics` until the group's reaction along its direction balances its traction load,
+  /// each trial speed a converged re-solve of x with the contact statuses; the group's speed stays at
+  /// the last trial (problem/RigidInflowBalance.cpp). Not converged (no root: the roll cannot draw
+  /// the strip in; a re-solve that fails): the report says why.
+  RigidInflowReport balanceRigidInflow(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics);
+  /// Sets a Rigid Inflow's speed (a finite-difference run puts the base run's back).
+  void setRigidInflowSpeed(double speed);
+  /// The linearization of a Rigid Inflow's balance at the converged state, for the sensitivities
+  /// (none without a rigid inflow).
+  std::optional<RigidInflowLinearization> rigidInflowLinearization();
 
   /// What the linearized free-surface update reads and moves: this problem's state.
   SurfaceLinearizationState linearizationState();
@@ -149,10 +174,8 @@ class Problem {
   /// the flow is re-solved and the free-surface loop goes on from the converged shape; its report
   /// continues the held loop's (FreeSurfaceReport::continueFrom).
   void releaseHeldAndGoOn(NonlinearSolver& solver);
-  /// A Rigid Inflow group (BoundaryConditions::rigidInflow): its speed U is sought until the group's
-  /// reaction along its direction balances its traction load, each trial speed a converged re-solve
-  /// with the contact statuses (problem/RigidInflowBalance.cpp). Failure (no root: the roll cannot
-  /// draw the strip in; a re-solve that fails) makes the solve unconverged with the reason.
+  /// balanceRigidInflow on the problem's own state: its report is m_rigidInflowReport, its Newton
+  /// iterations and contact changes add to the solve's, and a failure makes the solve unconverged.
   void balanceRigidInflow(NonlinearSolver& solver);
 
   /// The free-surface loop on the problem's own state (convergeFreeSurfaces): its report is
