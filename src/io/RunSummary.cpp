@@ -43,6 +43,7 @@ nlohmann::json runSummary(const Problem& problem, const RunRecord& record,
                                {"start_speed", inflow.startSpeed}, {"speed", inflow.speed},
                                {"force", inflow.force},           {"force_scale", inflow.forceScale},
                                {"solves", inflow.solves},         {"newton_iterations", inflow.newtonIterations},
+                               {"jump", inflow.jump},
                                {"history", history}};
   }
   summary["dofs"] = problem.dofMap().ownedMap()->getGlobalNumElements();

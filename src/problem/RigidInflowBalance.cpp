@@ -34,6 +34,11 @@ namespace flowform {
 
 namespace {
 
+/// A bracket this narrow relative to U has collapsed.
+constexpr double kCollapsed = 1e-12;
+/// The imbalance accepted at a jump of F, relative to the force scale (Problem::balanceRigidInflow).
+constexpr double kJumpTolerance = 1e-5;
+
 std::string number(double v) {
   std::ostringstream os;
   os << std::setprecision(4) << v;
@@ -162,12 +167,34 @@ RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x
       if (side == 1) Fb *= 0.5;
       side = 1;
     }
-    if (std::abs(Ub - Ua) <= 1e-14 * std::abs(Ub)) break;
+    if (std::abs(Ub - Ua) <= kCollapsed * std::abs(Ub)) break;
   }
   Fb = Flast;
-  // The state is the last solve's (at Ub).
+  // A bracket that collapsed on a jump of F (a contact node that switches between the two sides;
+  // measured at ν = 0.3 on xml/rolling.xml: 2.4e-6 of the scale 4.5 across 1e-14 of U): the
+  // state at the end of the smaller imbalance, accepted below kJumpTolerance × scale with a warning.
+  if (!done(Fb) && std::abs(Ub - Ua) <= kCollapsed * std::abs(Ub)) {
+    // The trial of the smallest imbalance at the jump (Illinois scales the kept end's F: the
+    // history has the true ones).
+    std::array<double, 2> best = rep.history.back();
+    for (const auto& h : rep.history)
+      if (std::abs(h[0] - Ub) <= 10 * kCollapsed * std::abs(Ub) && std::abs(h[1]) < std::abs(best[1])) best = h;
+    if (best != rep.history.back()) {
+      if (!solveAt(best[0])) return fail("the re-solve at speed " + number(best[0]) + " failed: " + failure);
+      rep.history.push_back({best[0], force(scale)});
+    }
+    Fb = rep.history.back()[1];
+    if (std::abs(Fb) <= kJumpTolerance * scale) {
+      rep.jump = true;
+      warn() << "rigid inflow '" << inflow.group << "': the force balance jumps across speed " << number(Ub)
+             << " (a contact node switching); taken with the imbalance " << number(Fb) << " of the scale "
+             << number(scale) << "\n";
+      Fb = 0.0;  // accepted (rep.force keeps the imbalance)
+    }
+  }
+  // The state is the last solve's.
   rep.speed = m_bcs->rigidInflow().speed;
-  rep.force = Fb;
+  rep.force = rep.history.back()[1];
   rep.forceScale = scale;
   rep.converged = done(Fb);
   if (!rep.converged)

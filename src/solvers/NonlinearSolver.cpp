@@ -247,8 +247,14 @@ bool NonlinearSolver::reusedFactorSolve(Vector& x, const FlowPhysics& physics, c
   return false;
 }
 
+bool NonlinearSolver::isLinear(const FlowPhysics& physics) const {
+  // A Newtonian material makes the bulk linear; the contact walls may not be (Coulomb's p⁺ and
+  // sticking bound, complementarity's max): then Newton, even at n = 1.
+  return isNewtonian(physics.material) && m_model.assembler().contactIsLinear();
+}
+
 SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const NewtonOptions& options) {
-  if (isNewtonian(target.material)) return solve(x, target);
+  if (isLinear(target)) return solve(x, target);
   Vector start(x, Teuchos::Copy);
   int reused = 0;
   NewtonOptions newtonOptions = options;
@@ -321,7 +327,7 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
   const double atol = m_params.get<double>("Absolute Residual Tolerance");
   const double rtol = m_params.get<double>("Relative Residual Tolerance");
 
-  if (isNewtonian(target.material)) {
+  if (isLinear(target)) {
     // Linear: one factorization and one solve; the second residual only verifies it.
     report.linear = true;
     Vector f(x.getMap());

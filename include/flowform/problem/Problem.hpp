@@ -50,6 +50,7 @@ struct RigidInflowReport {
   int solves = 0, newtonIterations = 0, contactChanges = 0;
   std::vector<int> newtonPerSolve;
   bool converged = false;
+  bool jump = false;  ///< accepted at a jump of the force balance (the imbalance is `force`)
   std::string message;
   std::vector<std::array<double, 2>> history;  ///< (U, force) of every trial speed
 };
