@@ -191,7 +191,7 @@ void BoundaryConditions::build(const Mesh& mesh) {
       }
       // A rigid inflow's velocity is its direction times the current speed (RigidInflow).
       double scale = 1.0;
-      if (group.get<bool>("Rigid Inflow")) {
+      if (group.get<bool>("Rigid Inflow", false)) {
         if (!parallelTo.empty() || !hasX || !hasY)
           throw InputError("Boundary Conditions/" + name + ": a 'Rigid Inflow' needs both 'Velocity X' and "
                            "'Velocity Y' (its direction and starting speed), without 'Parallel To'");

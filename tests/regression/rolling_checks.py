@@ -65,7 +65,9 @@ def run(flowform, case, outdir, sets, expect=0):
 
 def scene(flowform, source, outdir, perturbed):
     case = os.path.join(source, "xml/rolling.xml")
-    r = run(flowform, case, outdir, ["Sensitivity/Finite Difference Check=true"])
+    # The perturbed copy only needs check 5: no sensitivities (8 s instead of 19 s).
+    r = run(flowform, case, outdir, ["Sensitivity/Parameters={}"] if perturbed else
+            ["Sensitivity/Finite Difference Check=true"])
     s = r.summary
     f = s["functionals"]
     failed = 0
@@ -99,6 +101,8 @@ def scene(flowform, source, outdir, perturbed):
     failed += checks.check(0.0 < f["neutral_angle"] < alpha,
                            f"the neutral point lies inside the arc: 0 < {f['neutral_angle']:.4f} < {alpha:.4f} deg")
     failed += checks.check(f["forward_slip"] > 0.0, f"the forward slip {f['forward_slip']:.5f} is positive")
+    if perturbed:
+        return failed
     fd = s["fd_check"]
     for name, tol in (("roll_force", 1e-3), ("roll_torque", 1e-3), ("forward_slip", 1e-3), ("neutral_angle", 2e-2)):
         c = fd[name]["Friction Coefficient"]
