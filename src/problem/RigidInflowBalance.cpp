@@ -206,11 +206,20 @@ RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x
 }
 
 void Problem::balanceRigidInflow(NonlinearSolver& solver) {
-  m_rigidInflowReport = balanceRigidInflow(solver, *m_solution, m_physics);
-  const RigidInflowReport& rep = m_rigidInflowReport;
+  RigidInflowReport rep = balanceRigidInflow(solver, *m_solution, m_physics);
+  // Its counts are for this call; the run's report sums the calls (rounds with free surfaces).
   m_contactChanges += rep.contactChanges;
   m_report.newtonIterations += rep.newtonIterations;
   for (int n : rep.newtonPerSolve) m_report.newtonPerSolve.push_back(n);
+  if (!m_rigidInflowReport.group.empty()) {
+    const RigidInflowReport& before = m_rigidInflowReport;
+    rep.startSpeed = before.startSpeed;
+    rep.solves += before.solves;
+    rep.newtonIterations += before.newtonIterations;
+    rep.contactChanges += before.contactChanges;
+    rep.history.insert(rep.history.begin(), before.history.begin(), before.history.end());
+  }
+  m_rigidInflowReport = rep;
   if (!rep.converged) {
     m_report.converged = false;
     m_report.message = rep.message;

@@ -175,8 +175,9 @@ class Problem {
   /// the flow is re-solved and the free-surface loop goes on from the converged shape; its report
   /// continues the held loop's (FreeSurfaceReport::continueFrom).
   void releaseHeldAndGoOn(NonlinearSolver& solver);
-  /// balanceRigidInflow on the problem's own state: its report is m_rigidInflowReport, its Newton
-  /// iterations and contact changes add to the solve's, and a failure makes the solve unconverged.
+  /// balanceRigidInflow on the problem's own state: its report joins m_rigidInflowReport (the
+  /// rounds with free surfaces), its Newton iterations and contact changes add to the solve's, and a
+  /// failure makes the solve unconverged.
   void balanceRigidInflow(NonlinearSolver& solver);
 
   /// The free-surface loop on the problem's own state (convergeFreeSurfaces): its report is
@@ -185,6 +186,8 @@ class Problem {
   void loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart, const std::string& context);
 
   static constexpr int kFirstTryHalvings = 3;  ///< continuation halvings of the first start with walls
+  /// Rounds of a Rigid Inflow's balance and the free-surface loop at most (solve()).
+  static constexpr int kMaxInflowRounds = 10;
   Teuchos::ParameterList m_params;
   Teuchos::RCP<const Comm> m_comm;
   std::string m_baseDir;
