@@ -96,6 +96,11 @@ static void buildValidGroupParameters(const ValidList& valid) {
              "Velocity type: the condition holds while the free surfaces first converge; then the group is "
              "released (traction-free) and the free-surface loop goes on from that shape: a continuation for a "
              "boundary the loop cannot converge free from the start (a curling chip's outlet)");
+  valid->set("Rigid Inflow", false,
+             "Velocity type: the group moves as one rigid body along (Velocity X, Velocity Y) at a speed that is an "
+             "unknown: Velocity X/Y give the direction and the starting speed, and the solve scales them until the "
+             "group's reaction balances its Traction X/Y (the force balance of the rigid body upstream: a rolled "
+             "strip nobody pushes, docs/rolling.md). At most one group");
   valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components", finiteNumber());
   valid->set("Traction Y", 0.0, "traction t_y, force per unit area, on free components", finiteNumber());
 }
@@ -184,10 +189,31 @@ void BoundaryConditions::build(const Mesh& mesh) {
         }
         normal = m_faceNormals.at(parallelTo);
       }
+      // A rigid inflow's velocity is its direction times the current speed (RigidInflow).
+      double scale = 1.0;
+      if (group.get<bool>("Rigid Inflow", false)) {
+        if (!parallelTo.empty() || !hasX || !hasY)
+          throw InputError("Boundary Conditions/" + name + ": a 'Rigid Inflow' needs both 'Velocity X' and "
+                           "'Velocity Y' (its direction and starting speed), without 'Parallel To'");
+        const double vx = group.get<double>("Velocity X"), vy = group.get<double>("Velocity Y");
+        const double speed = std::hypot(vx, vy);
+        if (!(speed > 0.0))
+          throw InputError("Boundary Conditions/" + name + ": a 'Rigid Inflow' needs a nonzero starting velocity "
+                           "(Velocity X, Velocity Y): it gives the direction the group moves along");
+        if (!m_rigidInflow.group.empty() && m_rigidInflow.group != name)
+          throw InputError("Boundary Conditions/" + name + ": 'Rigid Inflow' is set on groups '" +
+                           m_rigidInflow.group + "' and '" + name + "'; at most one group may have it");
+        if (m_rigidInflow.group.empty()) {  // the first build: the starting speed
+          m_rigidInflow.group = name;
+          m_rigidInflow.direction = {vx / speed, vy / speed};
+          m_rigidInflow.speed = speed;
+        }
+        scale = m_rigidInflow.speed / speed;
+      }
       for (const auto& e : bg.edges)
         for (GO n : e) {
-          if (hasX) conditions[n].push_back({{1.0, 0.0}, group.get<double>("Velocity X"), name});
-          if (hasY) conditions[n].push_back({{0.0, 1.0}, group.get<double>("Velocity Y"), name});
+          if (hasX) conditions[n].push_back({{1.0, 0.0}, scale * group.get<double>("Velocity X"), name});
+          if (hasY) conditions[n].push_back({{0.0, 1.0}, scale * group.get<double>("Velocity Y"), name});
           if (!parallelTo.empty()) conditions[n].push_back({{normal[0], normal[1]}, 0.0, name});  // u·n = 0
         }
     } else if (type == "Symmetry") {
@@ -222,6 +248,11 @@ void BoundaryConditions::build(const Mesh& mesh) {
           m_tractionEdges.push_back({{dofMap.overlapIndex(e[0]), dofMap.overlapIndex(e[1])}, {t[0], t[1]}});
     }
   }
+}
+
+void BoundaryConditions::setRigidInflowSpeed(const Mesh& mesh, double speed) {
+  m_rigidInflow.speed = speed;
+  build(mesh);
 }
 
 void BoundaryConditions::imposeOnSolution(Vector& xOwned, bool homogeneous) const {

@@ -120,7 +120,9 @@ std::string Simulation::statusMessage() const {
 void Simulation::runSensitivity() {
   const auto start = std::chrono::steady_clock::now();
   Problem& p = *m_problem;
-  m_sensitivity->compute(p.model(), p.solution(), p.responses(), p.mesh(), p.dofMap(), p.contactWalls());
+  const std::optional<RigidInflowLinearization> inflow = p.rigidInflowLinearization();
+  m_sensitivity->compute(p.model(), p.solution(), p.responses(), p.mesh(), p.dofMap(), p.contactWalls(),
+                         inflow ? &*inflow : nullptr);
   if (!p.freeSurfaces().empty() && m_sensitivity->totalShapeRequested() && m_sensitivity->finite()) {
     m_shapeDerivative = totalShapeDerivative(p, *m_sensitivity);
     if (m_shapeDerivative.computed) m_sensitivity->setTotalShapeDerivatives(m_shapeDerivative.responses);

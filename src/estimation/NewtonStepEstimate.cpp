@@ -30,6 +30,14 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
     twoLevel.details["free_surface_fallback"] = 1.0;
     return twoLevel;
   }
+  // Likewise a Rigid Inflow: Newton steps at the coarse run's speed would not balance it on the
+  // refined mesh (its speed is found by re-solves, Problem::balanceRigidInflow).
+  if (!coarse.boundaryConditions().rigidInflow().group.empty()) {
+    log() << "error estimate: a Rigid Inflow: the two-level estimate (Newton steps do not balance its speed)\n";
+    ErrorEstimate twoLevel = TwoLevelEstimate::estimate(coarseRun, makeRun, indicatorResponses);
+    twoLevel.details["rigid_inflow_fallback"] = 1.0;
+    return twoLevel;
+  }
   const Teuchos::ParameterList& settings = coarse.parameters().sublist("Error Estimation");
   estimate.order = settings.get<double>("Order");
   const int maxSteps = settings.get<int>("Newton Steps");

@@ -36,6 +36,16 @@ nlohmann::json runSummary(const Problem& problem, const RunRecord& record,
     summary["free_surface"]["self_deciding_contacts"] = selfDeciding;
     summary["free_surface"]["released_groups"] = problem.boundaryConditions().releasedGroups();
   }
+  if (const RigidInflowReport& inflow = problem.rigidInflowReport(); !inflow.group.empty()) {
+    nlohmann::json history = nlohmann::json::array();
+    for (const auto& [speed, force] : inflow.history) history.push_back({{"speed", speed}, {"force", force}});
+    summary["rigid_inflow"] = {{"group", inflow.group},          {"converged", inflow.converged},
+                               {"start_speed", inflow.startSpeed}, {"speed", inflow.speed},
+                               {"force", inflow.force},           {"force_scale", inflow.forceScale},
+                               {"solves", inflow.solves},         {"newton_iterations", inflow.newtonIterations},
+                               {"jump", inflow.jump},
+                               {"history", history}};
+  }
   summary["dofs"] = problem.dofMap().ownedMap()->getGlobalNumElements();
   summary["mesh"] = {{"file", mesh.source}, {"nodes", mesh.numNodes()}, {"cells", mesh.numCells()},
                      {"cell_type", cellTypeName(mesh.cellType)}};

@@ -69,6 +69,8 @@ void Problem::startFrom(const Problem& other, bool decideZoneLimits) {
   if (other.m_mesh.coords != other.m_madeCoords)
     moveNodes(carryShape(other.meshAsMade(), other.mesh(), meshAsMade()));
   if (!other.m_bcs->releasedGroups().empty()) m_bcs->releaseHeld(m_mesh);
+  // A rigid inflow starts at the speed the other mesh found.
+  if (!m_bcs->rigidInflow().group.empty()) m_bcs->setRigidInflowSpeed(m_mesh, other.m_bcs->rigidInflow().speed);
   interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap,
               *m_solution);
   m_bcs->imposeOnSolution(*m_solution);

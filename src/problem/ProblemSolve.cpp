@@ -68,8 +68,23 @@ const SolveReport& Problem::solve() {
   if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) m_report.message += firstSolveHints();
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
+  if (m_report.converged && !m_bcs->rigidInflow().group.empty()) balanceRigidInflow(solver);
   if (m_report.converged && !m_freeSurfaces->empty()) {
     loopFreeSurfaces(solver, {m_report.unsettledContacts, m_report.unsettledContactRatio}, "");
+    // A Rigid Inflow's speed and the surfaces in turn, until the balance holds on the converged shape.
+    for (int round = 0; round < kMaxInflowRounds && m_report.converged && !m_bcs->rigidInflow().group.empty();
+         ++round) {
+      const int before = m_rigidInflowReport.solves;
+      balanceRigidInflow(solver);
+      if (!m_report.converged || m_rigidInflowReport.solves == before) break;
+      if (round + 1 == kMaxInflowRounds) {
+        m_report.converged = false;
+        m_report.message = "the Rigid Inflow's speed and the free surfaces did not settle in " +
+                           std::to_string(kMaxInflowRounds) + " rounds";
+        break;
+      }
+      loopFreeSurfaces(solver, {0, 0.0}, "after the Rigid Inflow's speed changed: ");
+    }
     if (m_report.converged && m_bcs->releaseHeld(m_mesh)) releaseHeldAndGoOn(solver);
   }
   return m_report;

@@ -27,6 +27,10 @@ Responses::Responses(const Teuchos::ParameterList& list, const Mesh& mesh) {
     if (responseTypes()[type].needsBoundary && !mesh.hasBoundary(boundary))
       throw InputError("Responses/" + name + "/Boundary: mesh '" + mesh.source + "' has no boundary group '" +
                        boundary + "'; it has: " + mesh.boundaryNames());
+    const std::string exitBoundary = r.get<std::string>("Exit Boundary");
+    if (responseTypes()[type].name == ForwardSlip::kName && !mesh.hasBoundary(exitBoundary))
+      throw InputError("Responses/" + name + "/Exit Boundary: mesh '" + mesh.source + "' has no boundary group '" +
+                       exitBoundary + "'; it has: " + mesh.boundaryNames());
     m_responses.push_back({name, boundary, type, makeResponse(type, r)});
   }
 }
@@ -38,6 +42,11 @@ void Responses::checkWalls(const std::vector<ContactWall>& walls) const {
     if (wall == walls.end())
       throw InputError("Responses/" + r.name + "/Boundary: '" + r.boundary + "' is not a Contact Wall (a " +
                        responseTypes()[r.type].name + " measures one)");
+    const std::string& typeName = responseTypes()[r.type].name;
+    if ((typeName == NeutralAngle::kName || typeName == ForwardSlip::kName) &&
+        wall->motion().kind != ToolMotion::Kind::Rotation)
+      throw InputError("Responses/" + r.name + "/Boundary: a " + typeName + " measures a rotating wall (a roll), and '" +
+                       r.boundary + "' has no 'Tool Motion' = Rotation");
   }
 }
 

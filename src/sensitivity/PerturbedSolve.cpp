@@ -21,6 +21,19 @@ PerturbedRun solvePerturbed(Problem& problem, const SensitivityParameter& h, dou
   PerturbedRun run;
   SolveReport report = solver.resolve(*x, physics);
   if (report.converged && !walls.empty()) run.contactChanges = problem.statusLoop().run(solver, *x, physics, walls, report);
+  // A Rigid Inflow's speed is an unknown of the flow: balanced again at h + δ (the DDM's bordered
+  // system), and put back afterwards.
+  const double baseSpeed = problem.boundaryConditions().rigidInflow().speed;
+  const bool inflow = !problem.boundaryConditions().rigidInflow().group.empty();
+  if (report.converged && inflow) {
+    const RigidInflowReport balance = problem.balanceRigidInflow(solver, *x, physics);
+    run.contactChanges += balance.contactChanges;
+    report.newtonIterations += balance.newtonIterations;
+    if (!balance.converged) {
+      report.converged = false;
+      report.message = balance.message;
+    }
+  }
   // Nodes left cycling (a wall whose released nodes are free surfaces) are accepted when they only
   // graze the tool, as in the free-surface loop.
   const bool cycling = !FreeSurfaceLoop::settled({report.unsettledContacts, report.unsettledContactRatio});
@@ -49,6 +62,7 @@ PerturbedRun solvePerturbed(Problem& problem, const SensitivityParameter& h, dou
     }
     problem.moveNodes(shape);
   }
+  if (inflow) problem.setRigidInflowSpeed(baseSpeed);
   for (size_t w = 0; w < walls.size(); ++w) walls[w].restore(saved[w]);
   problem.model().setPhysics(problem.physics());
   return run;

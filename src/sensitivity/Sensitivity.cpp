@@ -12,6 +12,7 @@
 #include "flowform/core/Log.hpp"
 #include "flowform/core/Strings.hpp"
 #include "flowform/core/ValidList.hpp"
+#include "flowform/problem/Problem.hpp"
 
 namespace flowform {
 
@@ -95,7 +96,8 @@ Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<C
 }
 
 void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& responses, const Mesh& mesh,
-                          const DofMap& dofMap, const std::vector<ContactWall>& walls) {
+                          const DofMap& dofMap, const std::vector<ContactWall>& walls,
+                          const RigidInflowLinearization* inflow) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: sensitivity"));
   const int factorizations0 = model.linearSolver().numFactorizations();
   const int solves0 = model.linearSolver().numSolves();
@@ -138,6 +140,25 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
   m_dqdh->norm2(Teuchos::ArrayView<double>(m_solutionNorms));
   m_finite = true;
   for (double n : m_solutionNorms) m_finite = m_finite && std::isfinite(n);
+  // A Rigid Inflow's speed U: K g = −∂f/∂U, then the bordered system's dq/dh (Sensitivity.hpp).
+  m_inflow = inflow != nullptr;
+  m_inflowSpeedDerivatives.clear();
+  if (inflow && m_finite) {
+    MultiVector g(x.getMap(), 1);
+    model.solve(*inflow->minusDfDU, g);
+    const Vector gU = *g.getVector(0);
+    m_inflowForceSlope = inflow->dForce(gU, nullptr);
+    log() << "sensitivity: rigid inflow: dF/dU = " << m_inflowForceSlope << "\n";
+    for (size_t j = 0; j < numParameters; ++j) {
+      auto column = m_dqdh->getVectorNonConst(j);
+      const double dUdh = -inflow->dForce(*column, &m_parameters[j]) / m_inflowForceSlope;
+      column->update(dUdh, gU, 1.0);
+      m_inflowSpeedDerivatives[m_parameters[j].name] = dUdh;
+      log() << "sensitivity: rigid inflow: dU/d" << m_parameters[j].name << " = " << dUdh << "\n";
+    }
+    m_dqdh->norm2(Teuchos::ArrayView<double>(m_solutionNorms));
+    for (double n : m_solutionNorms) m_finite = m_finite && std::isfinite(n);
+  }
   m_factorizations = model.linearSolver().numFactorizations() - factorizations0;
   m_solves = model.linearSolver().numSolves() - solves0;
 
@@ -180,6 +201,9 @@ void Sensitivity::report(nlohmann::json& summary) const {
                             {"jacobian", m_jacobianUsed.empty() ? nlohmann::json(nullptr) : nlohmann::json(m_jacobianUsed)},
                             {"jacobian_offset", m_jacobianOffset},
                             {"finite", m_finite}};
+  if (m_inflow)
+    summary["sensitivity"]["rigid_inflow"] = {{"force_slope", m_inflowForceSlope},
+                                              {"speed_derivatives", m_inflowSpeedDerivatives}};
 }
 
 }  // namespace flowform

@@ -66,6 +66,12 @@ static void buildValidParameters(const ValidList& valid) {
              "finite-difference run: when spent, the run ends not converged (exit 3) with the last state written and "
              "the message saying where it was (docs/theory.md §5)",
              nonNegative());
+  valid->set("Rigid Inflow Tolerance", 1e-7,
+             "a Rigid Inflow group's speed is found when its force balance |d·Σ R_i| is at most this × Σ|R_i| over "
+             "every node with a prescribed component (Problem::balanceRigidInflow, docs/rolling.md)",
+             inRange(1e-14, 1.0));
+  valid->set("Rigid Inflow Max Solves", 40, "re-solves at most while a Rigid Inflow group's speed is sought",
+             intInRange(1, 10000));
   valid->set("Absolute Residual Tolerance", 1e-10, "||F||_2 below this is converged", nonNegative());
   valid->set("Relative Residual Tolerance", 1e-9, "||F||_2 / ||F_0||_2 below this is converged",
              inRange(0.0, 1.0, false, true));
@@ -242,8 +248,14 @@ bool NonlinearSolver::reusedFactorSolve(Vector& x, const FlowPhysics& physics, c
   return false;
 }
 
+bool NonlinearSolver::isLinear(const FlowPhysics& physics) const {
+  // A Newtonian material makes the bulk linear; the contact walls may not be (Coulomb's p⁺ and
+  // sticking bound, complementarity's max): then Newton, even at n = 1.
+  return isNewtonian(physics.material) && m_model.assembler().contactIsLinear();
+}
+
 SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const NewtonOptions& options) {
-  if (isNewtonian(target.material)) return solve(x, target);
+  if (isLinear(target)) return solve(x, target);
   Vector start(x, Teuchos::Copy);
   int reused = 0;
   NewtonOptions newtonOptions = options;
@@ -364,7 +376,7 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
   const double atol = m_params.get<double>("Absolute Residual Tolerance");
   const double rtol = m_params.get<double>("Relative Residual Tolerance");
 
-  if (isNewtonian(target.material)) {
+  if (isLinear(target)) {
     // Linear: one factorization and one solve; the second residual only verifies it.
     report.linear = true;
     Vector f(x.getMap());

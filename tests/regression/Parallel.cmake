@@ -84,3 +84,6 @@ flowform_parallel_equals_serial(separation extrusion_separation.xml --set "Adapt
 # the largest measured, 10³ below the loop's own move tolerance (1e-4). 45–55 s for both runs.
 flowform_parallel_equals_serial(cutting_free_chip cutting.xml --tol 1e-7 --set "Error Estimation/Method=None"
                                 --set "Boundary Conditions/chip_outlet/Release After Free Surfaces=true")
+# Rolling: the Rigid Inflow's balance (its force sums reduced over the ranks, ~10 re-solves) and the
+# Neutral Angle's per-node slip gathered from the owners, with the bordered DDM.
+flowform_parallel_equals_serial(rolling rolling.xml --set "Error Estimation/Method=None")

@@ -8,6 +8,16 @@ add_test(NAME newtonian_costs_one_solve
                  -- converged=true linear_problem=true newton_iterations=0
                     linear_solver.factorizations=1 linear_solver.solves=1)
 set_tests_properties(newtonian_costs_one_solve PROPERTIES LABELS "regression")
+# ... but not with a Coulomb wall (p⁺ and the sticking bound): Newton, not one linear solve (which
+# left |F| = 0.148 here: exit 3). The extrusion with n = 1, σ0 = 0 and its container moving.
+add_test(NAME newtonian_with_coulomb_wall_uses_newton
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_summary.py
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml ${CMAKE_CURRENT_BINARY_DIR}/newtonian_coulomb
+                 --set "Adaptivity/Enabled=false" --set "Material/Rate Exponent=1" --set "Material/Yield Stress=0"
+                 --set "Boundary Conditions/container/Tool Motion=Translation"
+                 --set "Boundary Conditions/container/Tool Velocity X=1.0"
+                 -- converged=true linear_problem=false exit_status=0)
+set_tests_properties(newtonian_with_coulomb_wall_uses_newton PROPERTIES LABELS "regression")
 # n = 40 (the cutting scene's exponent, docs/theory.md §6.3) is reached by continuation, and the
 # result says how.
 add_test(NAME continuation_reaches_n40

@@ -48,6 +48,14 @@ class Assembler {
 
   /// Contact walls to assemble with the cells (owned by the caller; may be empty).
   void setContactWalls(const std::vector<ContactWall>* walls);
+  /// Whether the contact walls' part of F is affine in x (no walls, or each ContactWall::isLinear):
+  /// with a Newtonian material F is then linear and one solve is exact.
+  bool contactIsLinear() const {
+    if (m_walls)
+      for (const ContactWall& wall : *m_walls)
+        if (!wall.isLinear()) return false;
+    return true;
+  }
 
   /// The case's physics kernels, assembled in this order (default: the flow kernel alone).
   /// Every component of the DofMap's fields must be owned by exactly one kernel.

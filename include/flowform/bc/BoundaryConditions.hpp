@@ -62,6 +62,15 @@ void applyConstraintRows(const NodeConstraint& nc, Scalar* nodeResidual) {
   nodeResidual[1 - nc.constrainedRow] = tangential;
 }
 
+/// A group that moves as one rigid body at an unknown speed (the "Rigid Inflow" entry): u = U d on
+/// its nodes, U found by the solve from the force balance d·Σ_i R_i = 0 (R_i the unconstrained
+/// residual, which holds the group's traction load; Problem::balanceRigidInflow).
+struct RigidInflow {
+  std::string group;  ///< empty: the case has none
+  std::array<double, 2> direction{1.0, 0.0};
+  double speed = 0.0;  ///< U, the current speed
+};
+
 class BoundaryConditions {
  public:
   /// The valid entries of one group's sublist (Type, Velocity X/Y, Traction X/Y).
@@ -90,6 +99,11 @@ class BoundaryConditions {
   /// The groups releaseHeld released (empty before).
   const std::vector<std::string>& releasedGroups() const { return m_released; }
 
+  /// The case's rigid inflow (group empty when there is none), and its speed changed: the
+  /// group's prescribed velocity becomes speed × direction (impose it on the solution next).
+  const RigidInflow& rigidInflow() const { return m_rigidInflow; }
+  void setRigidInflowSpeed(const Mesh& mesh, double speed);
+
   /// Sets the constrained components of an owned solution vector so that a·u = b holds
   /// (the initial guess then satisfies every constraint, and Newton keeps it so).
   /// `homogeneous`: the constraints with zero data (a·u = 0, u = 0), for test-space vectors.
@@ -106,6 +120,7 @@ class BoundaryConditions {
   /// face is rigid, while free-surface updates may move its released nodes off it.
   std::map<std::string, std::array<double, 2>> m_faceNormals;
   std::vector<std::string> m_held, m_released;
+  RigidInflow m_rigidInflow;
 };
 
 }  // namespace flowform

@@ -119,6 +119,14 @@ class ContactWall {
   /// status loop. Returns the number of complementarity nodes.
   int enterComplementarity();
   bool complementarity() const { return m_complementarity; }
+  /// Whether the wall's residual is affine in the solution: statuses (no complementarity's max) and
+  /// a law without a bound or a kink — None, or Norton with q = 1. Coulomb (ν p⁺, the sticking
+  /// bound), Tresca and Orowan are not: a Newtonian case with such a wall needs Newton (NonlinearSolver).
+  bool isLinear() const {
+    if (m_complementarity) return false;
+    const std::string& name = law().name;
+    return name == "None" || (name == "Norton" && m_settings.friction.nortonExponent == 1.0);
+  }
   /// The nodes at open convex tool corners that keep statuses: those active and in tension
   /// (p < −pressureTolerance) at `p` are released, all at once; returns how many. Called on the
   /// first solve's state before enterComplementarity (the die lip, in tension when every node

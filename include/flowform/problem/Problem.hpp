@@ -15,7 +15,9 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +40,29 @@
 #include "flowform/solvers/NonlinearSolver.hpp"
 
 namespace flowform {
+
+/// What the search for a Rigid Inflow's speed did (Problem::balanceRigidInflow).
+struct RigidInflowReport {
+  std::string group;  ///< empty: no rigid inflow
+  double startSpeed = 0.0, speed = 0.0;
+  double force = 0.0;       ///< d·Σ R_i at the final speed (0 at balance)
+  double forceScale = 0.0;  ///< Σ|R_i| over the nodes with a prescribed component
+  int solves = 0, newtonIterations = 0, contactChanges = 0;
+  std::vector<int> newtonPerSolve;
+  bool converged = false;
+  bool jump = false;  ///< accepted at a jump of the force balance (the imbalance is `force`)
+  std::string message;
+  std::vector<std::array<double, 2>> history;  ///< (U, force) of every trial speed
+};
+
+/// A Rigid Inflow's speed U as a sensitivity sees it: the bordered system [f(q, U, h) = 0,
+/// F(q, h) = 0] (F the group's force balance) gives dq/dh = (dq/dh)_U + (dU/dh) g with
+/// K g = −∂f/∂U and dU/dh = −(dF/dh)_U / (dF/dq g) (docs/rolling.md).
+struct RigidInflowLinearization {
+  Teuchos::RCP<Vector> minusDfDU;  ///< −∂f/∂U (owned map): nonzero in the group's constraint rows only
+  /// dF along (dq, h) at the converged state: d·Σ_{i∈group} (∂R_i/∂q dq + ∂R_i/∂h); h null: none.
+  std::function<double(const Vector& dq, const SensitivityParameter* h)> dForce;
+};
 
 class Problem {
  public:
@@ -83,6 +108,18 @@ class Problem {
   std::map<std::string, double> evaluateResponses(const Vector& x) const {
     return m_responses->evaluate(x, m_mesh, *m_dofMap, *m_assembler, m_walls);
   }
+
+  /// A Rigid Inflow group (BoundaryConditions::rigidInflow): its speed U is sought from the converged
+  /// flow x at `physics` until the group's reaction along its direction balances its traction load,
+  /// each trial speed a converged re-solve of x with the contact statuses; the group's speed stays at
+  /// the last trial (problem/RigidInflowBalance.cpp). Not converged (no root: the roll cannot draw
+  /// the strip in; a re-solve that fails): the report says why.
+  RigidInflowReport balanceRigidInflow(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics);
+  /// Sets a Rigid Inflow's speed (a finite-difference run puts the base run's back).
+  void setRigidInflowSpeed(double speed);
+  /// The linearization of a Rigid Inflow's balance at the converged state, for the sensitivities
+  /// (none without a rigid inflow).
+  std::optional<RigidInflowLinearization> rigidInflowLinearization();
 
   /// What the linearized free-surface update reads and moves: this problem's state.
   SurfaceLinearizationState linearizationState();
@@ -137,6 +174,7 @@ class Problem {
   const SolveReport& report() const { return m_report; }
   int contactChanges() const { return m_contactChanges; }
   const FreeSurfaceReport& freeSurfaceReport() const { return m_freeSurfaceReport; }
+  const RigidInflowReport& rigidInflowReport() const { return m_rigidInflowReport; }
 
  private:
   /// Penalty scales of every wall from the state x.
@@ -145,12 +183,19 @@ class Problem {
   /// the flow is re-solved and the free-surface loop goes on from the converged shape; its report
   /// continues the held loop's (FreeSurfaceReport::continueFrom).
   void releaseHeldAndGoOn(NonlinearSolver& solver);
+  /// balanceRigidInflow on the problem's own state: its report joins m_rigidInflowReport (the
+  /// rounds with free surfaces), its Newton iterations and contact changes add to the solve's, and a
+  /// failure makes the solve unconverged.
+  void balanceRigidInflow(NonlinearSolver& solver);
+
   /// The free-surface loop on the problem's own state (convergeFreeSurfaces): its report is
   /// m_freeSurfaceReport, its Newton iterations and changes add to the solve's, and a failure makes
   /// the solve unconverged, `context` prefixed to its message.
   void loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart, const std::string& context);
 
   static constexpr int kFirstTryHalvings = 3;  ///< continuation halvings of the first start with walls
+  /// Rounds of a Rigid Inflow's balance and the free-surface loop at most (solve()).
+  static constexpr int kMaxInflowRounds = 10;
   Teuchos::ParameterList m_params;
   Teuchos::RCP<const Comm> m_comm;
   std::string m_baseDir;
@@ -171,6 +216,7 @@ class Problem {
   SolveReport m_report;
   int m_contactChanges = 0;
   FreeSurfaceReport m_freeSurfaceReport;
+  RigidInflowReport m_rigidInflowReport;
 };
 
 }  // namespace flowform

@@ -26,7 +26,9 @@
 #include "flowform/responses/CellPowers.hpp"
 #include "flowform/responses/ContactLength.hpp"
 #include "flowform/responses/FlowRate.hpp"
+#include "flowform/responses/ForwardSlip.hpp"
 #include "flowform/responses/MeanPressure.hpp"
+#include "flowform/responses/NeutralAngle.hpp"
 #include "flowform/responses/ShearAngle.hpp"
 #include "flowform/responses/ThicknessRatio.hpp"
 #include "flowform/responses/ToolPower.hpp"
@@ -43,7 +45,7 @@ using ResponseList = TypeList<Types...>;
 using RegisteredResponses =
     ResponseList<BoundaryForce, MeanPressure, BoundaryPower, FlowRate, PlasticPower, FrictionPower, PenaltyPower,
                  StabilizationPower, DeadZone, BoundaryExtent, WallGap, ContactLength, WallForce, ThicknessRatio,
-                 ShearAngle, ToolPower, ToolTorque>;
+                 ShearAngle, ToolPower, ToolTorque, NeutralAngle, ForwardSlip>;
 
 /// A type's static facts, by its index in RegisteredResponses.
 struct ResponseTypeInfo {

@@ -37,6 +37,8 @@
 
 namespace flowform {
 
+struct RigidInflowLinearization;  // problem/Problem.hpp
+
 class Sensitivity {
  public:
   /// The "Sensitivity" sublist: Parameters, Jacobian, and the finite-difference check.
@@ -64,9 +66,11 @@ class Sensitivity {
   void setTotalShapeDerivatives(std::map<std::string, std::map<std::string, double>> d) { m_totalShape = std::move(d); }
   const std::map<std::string, std::map<std::string, double>>& totalShapeDerivatives() const { return m_totalShape; }
 
-  /// dq/dh for every parameter at the converged x, then dφ/dh for every response.
+  /// dq/dh for every parameter at the converged x, then dφ/dh for every response. With `inflow`
+  /// (a Rigid Inflow's speed U, an unknown of the flow: Problem::rigidInflowLinearization), dq/dh
+  /// is the bordered system's, (dq/dh)_U + (dU/dh) g with K g = −∂f/∂U, dU/dh = −(dF/dh)_U / (dF/dU).
   void compute(FlowModel& model, const Vector& x, const Responses& responses, const Mesh& mesh, const DofMap& dofMap,
-               const std::vector<ContactWall>& walls);
+               const std::vector<ContactWall>& walls, const RigidInflowLinearization* inflow = nullptr);
 
   bool computed() const { return !m_dqdh.is_null(); }
   /// Column j is dq/dh_j (owned map). Only after compute().
@@ -99,6 +103,10 @@ class Sensitivity {
   std::string m_jacobianUsed;
   double m_jacobianOffset = 0.0;  ///< ||q − q_J|| / ||q||, q_J where the factors were computed
   std::vector<double> m_rhsNorms, m_solutionNorms;
+  /// With a Rigid Inflow: dF/dU (the DDM's, at fixed statuses) and dU/dh per parameter.
+  bool m_inflow = false;
+  double m_inflowForceSlope = 0.0;
+  std::map<std::string, double> m_inflowSpeedDerivatives;
 };
 
 }  // namespace flowform

@@ -136,6 +136,9 @@ class NonlinearSolver {
   static constexpr int kMaxHomotopyFailures = 3;
   /// x += −J⁻¹ F(x): exact for a linear problem.
   double linearSolve(Vector& x, const FlowPhysics& physics);
+  /// Whether F is linear at `physics`: a Newtonian material and contact walls that are linear
+  /// (Assembler::contactIsLinear). Only then is one solve exact; otherwise Newton.
+  bool isLinear(const FlowPhysics& physics) const;
 
   FlowModel& m_model;
   Teuchos::ParameterList m_params;

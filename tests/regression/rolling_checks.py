@@ -1,0 +1,202 @@
+"""Rolling (docs/rolling.md): the strip nobody pushes, on xml/rolling.xml as shipped (R = 10, h0 = 1,
+h1 = 0.75, ν = 0.2, ω = 1), without its error estimate (the checks hold on any mesh).
+
+usage: rolling_checks.py SUBCOMMAND FLOWFORM SOURCE_DIR OUTDIR [--perturbed]
+
+scene   (with the finite-difference check of dφ/dν)
+  1. Exit 0; the Rigid Inflow's force balance |d·Σ R_i| <= 1e-7 of the force scale (the
+     solver's Rigid Inflow Tolerance; measured 1e-9).
+  2. The inflow is rigid: on the entry surface at least h0/2 upstream of the entry point the
+     velocity is (U, 0) to 1e-3 U (measured 1.4e-5: the upstream strip is rigid, so the speed
+     imposed uniformly on the inlet is what the strip does there anyway).
+  3. Mass: the Flow Rates over the closed boundary (inlet, outlet, roll, both strip surfaces) sum to
+     1e-10 of the throughput (the discrete continuity equation tested with q = 1; measured 1e-16).
+     Inlet and outlet fluxes differ by what crosses the flat, fixed strip surfaces, which are not
+     streamlines (measured 0.50 % of the throughput, nearly all through the entry surface near the
+     bite): asserted below 1 % — a free-surface strip would make it 0.
+  4. Power: Tool Power (roll) + the inlet's Boundary Power = Plastic + Friction + Penalty +
+     Stabilization Power to 1e-8 (the discrete identity, docs/theory.md §2: Newton's |F| <= 1e-10;
+     measured 1e-13; the inlet's power is U × the balance's remaining imbalance, 3.6e-8 — alone
+     1.1e-8 of the roll's power, so it must be in the sum; the tractions are 0); Tool Power =
+     ω × Tool Torque to 1e-12.
+  5. The neutral point lies inside the arc, 0 < θ_n < α = acos(1 − (h0 − h1)/(2R)) = 9.07°
+     (measured 1.49°), and the forward slip is positive (measured 2.26 %).
+  6. dφ/dν by DDM through the inflow speed (the bordered system) against central differences
+     that balance the inflow again at ν ± 2e-4: roll_force, roll_torque, forward_slip to 1e-3
+     relative (measured 3e-5, 3e-5, 2.4e-4: the residual difference is the O(δ²) term and the
+     kinks of a discrete stick zone), neutral_angle to 2e-2 (measured 2.6e-3; its one-sided
+     differences differ by 10 %: the neutral point crosses a wall segment). Signs as the slab
+     method's (docs/rolling.md): the force, torque, neutral angle and forward slip all grow with ν.
+tension (back tension σ_b = 0.1 on the inlet, front tension σ_f = 0.2 on the outlet; σ_b = 0.3 alone is
+  more than this roll can draw against: exit 3)
+  Exit 0; Tool Power + the inlet's Boundary Power + traction power (Σ t̄_x ∫u_x ds: σ_f Q_out −
+  σ_b Q_in) = dissipation to 1e-8;
+  the neutral angle lies inside the arc (measured 1.61°, 1.49° without tensions: the front
+  tension moves it towards the entry, the back tension towards the exit).
+free_exit (exit_surface a Free Surface from the roll's exit point, docs/rolling.md §6)
+  Exit 0; |Flow Rate| through it <= 1e-6 of the throughput (measured 6.5e-9: one update that
+  moves it 9e-6); the inflow's balance still holds on the moved mesh; the power balance to 1e-8.
+bite (ν = 0.1: below the steady rolling limit of this scene, measured between 0.15 and 0.2)
+  Exit 3, the message saying the roll cannot draw the strip in.
+bad_input
+  Exit 2 with the group named: a Rigid Inflow without Velocity Y; a Neutral Angle and a Forward
+  Slip on a fixed wall (the extrusion's container); a Forward Slip whose Exit Boundary is no group.
+
+--perturbed: the scene with the bite angle taken as 1° (the neutral angle must then fail check 5):
+the WILL_FAIL copy that shows the check can fail.
+"""
+import math
+import os
+import sys
+
+from flowform_tools import checks, csvio, launcher
+
+R, H0, H1, OMEGA = 10.0, 1.0, 0.75, 1.0
+ALPHA = math.degrees(math.acos(1.0 - (H0 - H1) / (2.0 * R)))
+XE = -R * math.sin(math.radians(ALPHA))
+DISSIPATION = ("plastic_power", "friction_power", "penalty_power", "stabilization_power")
+BASE = ["Error Estimation/Method=None"]
+
+
+def run(flowform, case, outdir, sets, expect=0):
+    r = launcher.run(flowform, case, outdir, BASE + sets, quiet=True, capture=True)
+    if r.status != expect:
+        print(f"flowform exited {r.status} (expected {expect}) on {outdir}:\n{(r.stderr or '')[-2000:]}")
+        sys.exit(1)
+    return r
+
+
+def scene(flowform, source, outdir, perturbed):
+    case = os.path.join(source, "xml/rolling.xml")
+    # The perturbed copy only needs check 5: no sensitivities (8 s instead of 19 s).
+    r = run(flowform, case, outdir, ["Sensitivity/Parameters={}"] if perturbed else
+            ["Sensitivity/Finite Difference Check=true"])
+    s = r.summary
+    f = s["functionals"]
+    failed = 0
+    inflow = s["rigid_inflow"]
+    U = inflow["speed"]
+    print(f"inflow speed U = {U:.10f} after {inflow['solves']} re-solves; roll force {f['roll_force']:.6f}, "
+          f"torque {f['roll_torque']:.6f}, neutral angle {f['neutral_angle']:.4f} deg, forward slip "
+          f"{f['forward_slip']:.5f}, contact length {f['contact_length']:.4f}; {s['newton_iterations']} Newton "
+          f"iterations, {s['timings']['total']:.1f} s")
+    failed += checks.check(inflow["converged"] and abs(inflow["force"]) <= 1e-7 * inflow["force_scale"],
+                           f"the inflow's force balance {inflow['force']:.2e} <= 1e-7 x {inflow['force_scale']:.3f}")
+    upstream = [r for r in csvio.rows(outdir, "entry_surface") if r["x"] <= XE - H0 / 2]
+    rigid = max(max(abs(-r["u_t"] - U), abs(r["u_n"])) for r in upstream) / U
+    failed += checks.check(len(upstream) > 5 and rigid <= 1e-3,
+                           f"the strip is rigid h0/2 upstream of the bite: max |u - (U, 0)|/U = {rigid:.1e} <= 1e-3 "
+                           f"({len(upstream)} nodes)")
+    closed = sum(f[k] for k in ("inlet_flux", "outlet_flux", "roll_flux", "entry_surface_flux", "exit_surface_flux"))
+    failed += checks.check(abs(closed) <= 1e-10 * f["outlet_flux"],
+                           f"the flow rates over the closed boundary sum to {closed:.1e} (<= 1e-10 of the throughput)")
+    leak = (f["outlet_flux"] + f["inlet_flux"]) / f["outlet_flux"]
+    failed += checks.check(abs(leak) < 0.01, f"outlet and inlet fluxes differ by {leak:.3%} (< 1 %: the flat strip "
+                           f"surfaces are not streamlines; entry surface {f['entry_surface_flux']:.2e}, exit surface "
+                           f"{f['exit_surface_flux']:.2e})")
+    dissipated = sum(f[k] for k in DISSIPATION)
+    balance = abs(f["roll_power"] + f["inlet_power"] - dissipated) / f["roll_power"]
+    failed += checks.check(balance <= 1e-8, f"Tool Power {f['roll_power']:.10f} + inlet Boundary Power "
+                           f"{f['inlet_power']:.1e} = dissipation {dissipated:.10f} (relative {balance:.1e} <= 1e-8)")
+    omega = abs(f["roll_power"] - OMEGA * f["roll_torque"]) / f["roll_power"]
+    failed += checks.check(omega <= 1e-12, f"Tool Power = omega x Tool Torque (relative {omega:.1e})")
+    alpha = 1.0 if perturbed else ALPHA
+    failed += checks.check(0.0 < f["neutral_angle"] < alpha,
+                           f"the neutral point lies inside the arc: 0 < {f['neutral_angle']:.4f} < {alpha:.4f} deg")
+    failed += checks.check(f["forward_slip"] > 0.0, f"the forward slip {f['forward_slip']:.5f} is positive")
+    if perturbed:
+        return failed
+    fd = s["fd_check"]
+    for name, tol in (("roll_force", 1e-3), ("roll_torque", 1e-3), ("forward_slip", 1e-3), ("neutral_angle", 2e-2)):
+        c = fd[name]["Friction Coefficient"]
+        failed += checks.check(c["rel_diff"] <= tol and c["ddm"] > 0.0,
+                               f"d{name}/dnu: DDM {c['ddm']:.6f}, FD {c['fd']:.6f} (relative {c['rel_diff']:.1e} <= "
+                               f"{tol:g}), positive as the slab method's")
+    print(f"dU/dnu = {s['sensitivity']['rigid_inflow']['speed_derivatives']['Friction Coefficient']:.6f}, "
+          f"dF/dU = {s['sensitivity']['rigid_inflow']['force_slope']:.6f}")
+    return failed
+
+
+def tension(flowform, source, outdir, perturbed):
+    case = os.path.join(source, "xml/rolling.xml")
+    sb, sf = 0.1, 0.2
+    s = run(flowform, case, outdir, ["Sensitivity/Parameters={}", f"Boundary Conditions/inlet/Traction X={-sb!r}",
+                                     f"Boundary Conditions/outlet/Traction X={sf!r}"]).summary
+    f = s["functionals"]
+    # Σ_edges ∫ t̄·u ds: the inlet's normal is −x, its Flow Rate −∫u_x ds; the outlet's +x.
+    traction = sf * f["outlet_flux"] + (-sb) * (-f["inlet_flux"])
+    dissipated = sum(f[k] for k in DISSIPATION)
+    balance = abs(f["roll_power"] + f["inlet_power"] + traction - dissipated) / f["roll_power"]
+    print(f"tensions: roll force {f['roll_force']:.6f}, torque {f['roll_torque']:.6f}, neutral angle "
+          f"{f['neutral_angle']:.4f} deg, forward slip {f['forward_slip']:.5f}, traction power {traction:.6f}")
+    failed = checks.check(balance <= 1e-8, f"Tool Power + traction power = dissipation (relative {balance:.1e} <= 1e-8)")
+    failed += checks.check(0.0 < f["neutral_angle"] < ALPHA,
+                           f"the neutral point lies inside the arc: 0 < {f['neutral_angle']:.4f} < {ALPHA:.4f} deg")
+    return failed
+
+
+def free_exit(flowform, source, outdir, perturbed):
+    case = os.path.join(source, "xml/rolling.xml")
+    s = run(flowform, case, outdir, ["Sensitivity/Parameters={}", "Boundary Conditions/exit_surface/Type=Free Surface",
+                                     "Boundary Conditions/exit_surface/Start Group=roll"]).summary
+    f = s["functionals"]
+    inflow = s["rigid_inflow"]
+    crossing = abs(f["exit_surface_flux"]) / f["outlet_flux"]
+    print(f"free exit surface: {s['free_surface']['iterations']} update(s); roll force {f['roll_force']:.6f}, "
+          f"neutral angle {f['neutral_angle']:.4f} deg, forward slip {f['forward_slip']:.5f}")
+    failed = checks.check(crossing <= 1e-6, f"nothing crosses the free exit surface: {crossing:.1e} of the throughput "
+                          f"(<= 1e-6, the loop's streamline tolerance)")
+    failed += checks.check(inflow["converged"] and abs(inflow["force"]) <= 1e-7 * inflow["force_scale"],
+                           f"the inflow's balance holds on the converged shape: {inflow['force']:.1e}")
+    dissipated = sum(f[k] for k in DISSIPATION)
+    balance = abs(f["roll_power"] + f["inlet_power"] - dissipated) / f["roll_power"]
+    failed += checks.check(balance <= 1e-8, f"power balance on the moved mesh (relative {balance:.1e} <= 1e-8)")
+    return failed
+
+
+def bite(flowform, source, outdir, perturbed):
+    case = os.path.join(source, "xml/rolling.xml")
+    r = run(flowform, case, outdir, ["Sensitivity/Parameters={}", "Boundary Conditions/roll/Friction Coefficient=0.1"],
+            expect=3)
+    message = r.summary["message"]
+    print(message)
+    return checks.check("cannot draw it in" in message and not r.summary["converged"],
+                        "nu = 0.1: exit 3, the roll cannot draw the strip in")
+
+
+def bad_input(flowform, source, outdir, perturbed):
+    rolling = os.path.join(source, "xml/rolling.xml")
+    extrusion = os.path.join(source, "xml/extrusion.xml")
+    failed = 0
+    for name, case, says, sets in (
+            ("rigid_inflow_without_y", rolling, "Velocity Y", []),
+            ("neutral_angle_fixed_wall", extrusion, "Rotation",
+             ["Responses/n/Type=Neutral Angle", "Responses/n/Boundary=container"]),
+            ("forward_slip_fixed_wall", extrusion, "Rotation",
+             ["Responses/s/Type=Forward Slip", "Responses/s/Boundary=container", "Responses/s/Exit Boundary=outlet"]),
+            ("forward_slip_no_exit", rolling, "Exit Boundary", ["Responses/forward_slip/Exit Boundary=nowhere"])):
+        out = os.path.join(outdir, name)
+        if name == "rigid_inflow_without_y":  # the case without the entry (--set cannot remove one)
+            bad = os.path.join(outdir, "no_y.xml")
+            os.makedirs(outdir, exist_ok=True)
+            with open(rolling) as src, open(bad, "w") as dst:
+                dst.write(src.read().replace('<Parameter name="Velocity Y" type="double" value="0.0"/>', "")
+                          .replace('"../meshes/rolling.geo"', '"' + os.path.join(source, "meshes/rolling.geo") + '"'))
+            case, sets = bad, []
+        r = launcher.run(flowform, case, out, sets, quiet=True, clean=True, capture=True)
+        message = (r.stderr or "") + (r.stdout or "")
+        failed += checks.check(r.status == 2 and says in message,
+                               f"bad input {name}: exit {r.status}, says {says!r}: {message.strip()[-200:]}")
+    return failed
+
+
+def main():
+    sub, flowform, source, outdir = sys.argv[1:5]
+    perturbed = "--perturbed" in sys.argv[5:]
+    failed = {"scene": scene, "tension": tension, "free_exit": free_exit, "bite": bite,
+              "bad_input": bad_input}[sub](flowform, source, outdir, perturbed)
+    return checks.verdict(failed)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
