@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 #include "flowform/core/Budget.hpp"
 #include "flowform/core/Clock.hpp"
@@ -21,23 +22,24 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
   ErrorEstimate estimate;
   estimate.method = kName;
   const Problem& coarse = coarseRun.problem();
+  // Where Newton steps cannot estimate, the two-level estimate (its refined solve converged),
+  // the reason logged and flagged in its details.
+  auto twoLevelInstead = [&](const std::string& why, const char* flag) {
+    log() << "error estimate: " << why << "\n";
+    ErrorEstimate twoLevel = TwoLevelEstimate::estimate(coarseRun, makeRun, indicatorResponses);
+    twoLevel.details[flag] = 1.0;
+    return twoLevel;
+  };
   // At the carried shape a step leaves every shape response (the swell) as it is: free-surface
   // cases get the two-level estimate (NewtonStepEstimate.hpp).
-  if (!coarse.freeSurfaces().empty()) {
-    log() << "error estimate: free surfaces: the two-level estimate (a Newton step at the carried shape does not "
-             "move them)\n";
-    ErrorEstimate twoLevel = TwoLevelEstimate::estimate(coarseRun, makeRun, indicatorResponses);
-    twoLevel.details["free_surface_fallback"] = 1.0;
-    return twoLevel;
-  }
+  if (!coarse.freeSurfaces().empty())
+    return twoLevelInstead("free surfaces: the two-level estimate (a Newton step at the carried shape does not move them)",
+                           "free_surface_fallback");
   // Likewise a Rigid Inflow: Newton steps at the coarse run's speed would not balance it on the
   // refined mesh (its speed is found by re-solves, Problem::balanceRigidInflow).
-  if (!coarse.boundaryConditions().rigidInflow().group.empty()) {
-    log() << "error estimate: a Rigid Inflow: the two-level estimate (Newton steps do not balance its speed)\n";
-    ErrorEstimate twoLevel = TwoLevelEstimate::estimate(coarseRun, makeRun, indicatorResponses);
-    twoLevel.details["rigid_inflow_fallback"] = 1.0;
-    return twoLevel;
-  }
+  if (!coarse.boundaryConditions().rigidInflow().group.empty())
+    return twoLevelInstead("a Rigid Inflow: the two-level estimate (Newton steps do not balance its speed)",
+                           "rigid_inflow_fallback");
   const Teuchos::ParameterList& settings = coarse.parameters().sublist("Error Estimation");
   estimate.order = settings.get<double>("Order");
   const int maxSteps = settings.get<int>("Newton Steps");
@@ -148,11 +150,10 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
   if (change > settled) {
     // Steps that do not settle estimate nothing (a step that moved a response by its whole
     // estimate): the refined solve is converged instead, with its own fallbacks.
-    log() << "error estimate: the responses did not settle in " << factorizations
-          << " Newton steps (the last step moved one by " << change
-          << " of its estimate; Error Estimation/Newton Steps): the two-level estimate instead\n";
-    ErrorEstimate twoLevel = TwoLevelEstimate::estimate(coarseRun, makeRun, indicatorResponses);
-    twoLevel.details["unsettled_fallback"] = 1.0;
+    std::ostringstream why;
+    why << "the responses did not settle in " << factorizations << " Newton steps (the last step moved one by "
+        << change << " of its estimate; Error Estimation/Newton Steps): the two-level estimate instead";
+    ErrorEstimate twoLevel = twoLevelInstead(why.str(), "unsettled_fallback");
     twoLevel.details["unsettled_newton_steps"] = factorizations;
     twoLevel.details["unsettled_last_step_change"] = change;
     return twoLevel;
