@@ -1,10 +1,12 @@
 #include "flowform/solvers/Mumps.hpp"
 
+#include <dlfcn.h>
 #include <dmumps_c.h>
 #include <mpi.h>
 
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -21,6 +23,21 @@ int infog(const DMUMPS_STRUC_C& id, int k) { return id.infog[k - 1]; }
 MPI_Comm rawComm(const Comm& comm) {
   const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
   return mpi ? static_cast<MPI_Comm>(*mpi->getRawMpiComm()) : MPI_COMM_SELF;
+}
+
+/// One BLAS thread per rank unless the user sets OPENBLAS_NUM_THREADS or OMP_NUM_THREADS
+/// (docs/toolchain.md "Ranks and BLAS threads"): the 2-D fronts are too small for a second
+/// thread to help, and OpenBLAS's idle threads spin on a core that another process (a second
+/// rank, the next test, a parallel sweep) needs. Looked up at run time: a BLAS other than
+/// OpenBLAS has no such symbol and is left as it is.
+void oneBlasThreadUnlessAsked() {
+  static const bool done = [] {
+    if (std::getenv("OPENBLAS_NUM_THREADS") || std::getenv("OMP_NUM_THREADS")) return true;
+    using SetThreads = void (*)(int);
+    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
+    return true;
+  }();
+  (void)done;
 }
 
 }  // namespace
@@ -78,6 +95,7 @@ void Mumps::doFactor(const Teuchos::RCP<const CrsMatrix>& A) {
   const MPI_Comm comm = rawComm(*A->getRowMap()->getComm());
   if (d.initialized && comm != d.comm) d.end();
   if (!d.initialized) {
+    oneBlasThreadUnlessAsked();
     d.comm = comm;
     d.id = DMUMPS_STRUC_C{};
     d.id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
