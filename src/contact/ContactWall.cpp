@@ -78,7 +78,8 @@ static void buildValidParameters(const ValidList& valid) {
   valid->set("Tool Velocity Y", 0.0, "Tool Motion = Translation: the tool's velocity, y component [velocity]", finiteNumber());
   valid->set("Rotation Centre X", 0.0,
              "Tool Motion = Rotation: the centre c the tool turns about, x [length]; also the point the Tool Torque "
-             "response is taken about", finiteNumber());
+             "response is taken about. Neither X nor Y given: the centre of the circle fitted to the wall's nodes "
+             "(a roll's axis then follows the mesh's radius and gap)", finiteNumber());
   valid->set("Rotation Centre Y", 0.0, "Tool Motion = Rotation: the centre c, y [length]; see Rotation Centre X", finiteNumber());
   valid->set("Angular Velocity", 0.0, "Tool Motion = Rotation: ω [1/time], counter-clockwise positive", finiteNumber());
   valid->set("Tangency Tolerance", 1e-3,
@@ -147,6 +148,7 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
 
   // InputError for a missing group, a zero-length segment, a branched group.
   m_curve = buildBoundaryCurve(mesh, mesh.boundary(group));
+  fitRotationCentre(group, params, mesh);
   m_active.assign(m_curve.nodes.size(), m_settings.initiallyActive);
   m_inContact.assign(m_curve.nodes.size(), m_settings.initiallyActive);
   m_changes.assign(m_curve.nodes.size(), 0);
@@ -196,6 +198,66 @@ void ContactWall::readToolMotion(const std::string& group, const Teuchos::Parame
       throw InputError(where + " = Translation: an axisymmetric tool moves along the axis only: Tool Velocity X "
                        "(radial) must be 0 (got " + Teuchos::toString(m.velocity[0]) + ")");
   }
+}
+
+void ContactWall::fitRotationCentre(const std::string& group, const Teuchos::ParameterList& given,
+                                    const Mesh& mesh) {
+  if (m_settings.motion.kind != ToolMotion::Kind::Rotation || given.isParameter("Rotation Centre X") ||
+      given.isParameter("Rotation Centre Y"))
+    return;
+  // Kåsa's algebraic fit: the circle x² + y² + D x + E y + F = 0 that minimizes the sum of its
+  // squared residuals at the nodes, in coordinates relative to the nodes' mean (so that the 3×3
+  // normal equations stay well conditioned for a short arc of a large roll); centre (−D/2, −E/2).
+  // Exact for nodes on a circle; checkTangency then measures how well the segments fit it.
+  const std::string where = "Boundary Conditions/" + group + "/Tool Motion = Rotation";
+  const size_t n = m_curve.nodes.size();
+  if (n < 3)
+    throw InputError(where + ": the Rotation Centre is not given and " + std::to_string(n) +
+                     " wall node(s) define no circle; give Rotation Centre X and Y");
+  double mx = 0.0, my = 0.0;
+  for (GO node : m_curve.nodes) {
+    mx += mesh.coords[node][0] / n;
+    my += mesh.coords[node][1] / n;
+  }
+  double A[3][3] = {}, b[3] = {};
+  double extent = 0.0;
+  for (GO node : m_curve.nodes) {
+    const double x = mesh.coords[node][0] - mx, y = mesh.coords[node][1] - my;
+    const double row[3] = {x, y, 1.0}, rhs = -(x * x + y * y);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) A[i][j] += row[i] * row[j];
+      b[i] += row[i] * rhs;
+    }
+    extent = std::max(extent, std::hypot(x, y));
+  }
+  // Gaussian elimination with partial pivoting; a straight wall makes the system singular.
+  int perm[3] = {0, 1, 2};
+  for (int c = 0; c < 3; ++c) {
+    int best = c;
+    for (int r = c + 1; r < 3; ++r)
+      if (std::abs(A[perm[r]][c]) > std::abs(A[perm[best]][c])) best = r;
+    std::swap(perm[c], perm[best]);
+    for (int r = c + 1; r < 3; ++r) {
+      const double f = A[perm[r]][c] / A[perm[c]][c];
+      for (int j = c; j < 3; ++j) A[perm[r]][j] -= f * A[perm[c]][j];
+      b[perm[r]] -= f * b[perm[c]];
+    }
+  }
+  double sol[3];
+  for (int c = 2; c >= 0; --c) {
+    double v = b[perm[c]];
+    for (int j = c + 1; j < 3; ++j) v -= A[perm[c]][j] * sol[j];
+    sol[c] = v / A[perm[c]][c];
+  }
+  const std::array<double, 2> centre{mx - 0.5 * sol[0], my - 0.5 * sol[1]};
+  const double radius = std::hypot(centre[0] - mx, centre[1] - my);
+  // A straight wall: no pivot, or a "circle" far larger than the wall (its sagitta below round-off).
+  if (!std::isfinite(centre[0]) || !std::isfinite(centre[1]) || !(radius < 1e6 * extent))
+    throw InputError(where + ": the Rotation Centre is not given and the wall's nodes lie on a straight line, "
+                     "not on a circle; give Rotation Centre X and Y");
+  m_settings.motion.centre = centre;
+  log() << "contact: wall '" << group << "' turns about the centre of its nodes' circle (" << centre[0] << ", "
+        << centre[1] << "), radius " << radius << "\n";
 }
 
 void ContactWall::checkTangency(const std::string& group) const {

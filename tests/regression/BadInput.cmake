@@ -190,6 +190,9 @@ flowform_exit_test(bad_input_tool_rotation_off_centre CASE contact_small.xml
   SET "Boundary Conditions/top/Tool Motion=Rotation" "Boundary Conditions/top/Angular Velocity=1.0"
       "Boundary Conditions/top/Rotation Centre X=0.5" "Boundary Conditions/top/Rotation Centre Y=-10.0"
   CONTAINS "Boundary Conditions/top/Tool Motion" "tangentially")
+flowform_exit_test(bad_input_tool_rotation_straight_wall_no_centre CASE contact_small.xml
+  SET "Boundary Conditions/top/Tool Motion=Rotation" "Boundary Conditions/top/Angular Velocity=1.0"
+  CONTAINS "Boundary Conditions/top/Tool Motion = Rotation" "straight line" "Rotation Centre X and Y")
 flowform_exit_test(bad_input_tool_rotation_axisymmetric CASE contact_small.xml
   SET "Problem/Geometry=Axisymmetric" "Boundary Conditions/top/Tool Motion=Rotation"
       "Boundary Conditions/top/Angular Velocity=1.0"

@@ -341,6 +341,10 @@ class ContactWall {
   void readToolMotion(const std::string& group, const Teuchos::ParameterList& given, const Teuchos::ParameterList& list);
   /// InputError naming the group when a moving tool is not tangential to its own segments.
   void checkTangency(const std::string& group) const;
+  /// A Rotation whose Rotation Centre X and Y are not given turns about the centre of the circle
+  /// fitted to the wall's nodes (the roll's axis follows the mesh's R and gap); InputError naming
+  /// the group for fewer than 3 nodes or nodes on a straight line.
+  void fitRotationCentre(const std::string& group, const Teuchos::ParameterList& given, const Mesh& mesh);
 
   BoundaryCurve m_curve;
   ContactWallSettings m_settings;
