@@ -19,7 +19,7 @@ import argparse
 import os
 import sys
 
-from flowform_tools import launcher, machine, summary, sweep, tables
+from flowform_tools import launcher, machine, sweep, tables
 from flowform_tools import default_flowform, repo_path
 from flowform_tools.numerics import extrapolate_three as extrapolate
 

@@ -50,7 +50,7 @@ import sys
 
 import numpy as np
 
-from flowform_tools import launcher, plotting, rolling_compare, rolling_theory, summary as summary_module, sweep
+from flowform_tools import launcher, plotting, rolling_compare, summary as summary_module, sweep
 from flowform_tools import default_flowform, repo_path
 
 VARIANTS = {"Contact Force": "cf", "Pressure": "pressure"}
@@ -116,9 +116,10 @@ def run_all(a, plist):
         d = p.directory(a.out)
         if hasattr(p, "shared") or (a.reuse and rolling_compare.run_dir_ok(d)) or a.plots_only:
             continue
-        r = launcher.run(a.flowform, repo_path("xml", "rolling.xml"), d, BASE + p.sets() + a.sets, quiet=True,
-                         capture=True, timeout=a.timeout, clean=True)
-        print(f"  {VARIANTS[p.variant]}/{p.name}: exit {r.status}, {r.wall:.1f} s", flush=True)
+        r, bilateral = rolling_compare.run_pass(a.flowform, repo_path("xml", "rolling.xml"), d,
+                                                BASE + p.sets() + a.sets, timeout=a.timeout)
+        print(f"  {VARIANTS[p.variant]}/{p.name}: exit {r.status}, {r.wall:.1f} s"
+              + (" (statuses cycled: bilateral roll)" if bilateral else ""), flush=True)
         if r.status != 0:
             failed.append((p, r.status, (r.stderr or "").strip().splitlines()[-1:] or [""]))
     return failed
@@ -132,7 +133,7 @@ COLUMNS = ["variant", "part", "nu", "law", "R_h0", "reduction", "h", "exit",
            "fe_neutral_deg", "slab_neutral_deg", "fe_forward_slip", "slab_forward_slip",
            "fe_contact_length", "slab_contact_length", "rel_contact_length", "rate_factor",
            "flux_mismatch", "entry_surface_flux_rel", "slab_min_nu", "sticking_force", "sticking_torque",
-           "newton", "inflow_solves", "seconds", "dir"]
+           "bilateral", "newton", "inflow_solves", "seconds", "dir"]
 
 
 def row_of(a, p):
@@ -145,6 +146,7 @@ def row_of(a, p):
     if s is None or not s.converged:
         return row
     c = rolling_compare.compare(d, s)
+    row["bilateral"] = int(rolling_compare.is_bilateral(s))
     row.update(fe_force=c.fe["roll_force"], slab_force=c.slab.force, rel_force=c.rel["roll_force"],
                fe_torque=c.fe["roll_torque"], slab_torque=c.slab.torque, rel_torque=c.rel["roll_torque"],
                fe_neutral_deg=c.fe["neutral_angle"], slab_neutral_deg=c.slab.neutral_angle,
@@ -173,7 +175,7 @@ def print_table(rows):
           "| slip FE | slab | L_c Δ | σ̄_D/σ̄(e_m) | (Q_in−Q_out)/Q | ν_min slab |")
     print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for r in rows:
-        nu = f"{r['nu']:g}" + (" (Tresca m)" if r["law"] == "Tresca" else "")
+        nu = f"{r['nu']:g}" + (" (Tresca m)" if r["law"] == "Tresca" else "") + (" ‡" if r.get("bilateral") else "")
         if r.get("fe_force") is None:
             print(f"| {VARIANTS[r['variant']]} | {r['part']} | {nu} | {r['R_h0']:g} | {r['reduction']:.2f} | {r['h']:g} "
                   f"| exit {r['exit']} | | | | | | | | | | | | | {r['slab_min_nu']:.4f} |")
@@ -184,6 +186,8 @@ def print_table(rows):
               f"| {r['fe_neutral_deg']:.3f} | {r['slab_neutral_deg']:.3f} "
               f"| {r['fe_forward_slip']:.4f} | {r['slab_forward_slip']:.4f} | {pct(r['rel_contact_length'])} "
               f"| {num(r['rate_factor'], '{:.3f}')} | {pct(r['flux_mismatch'])} | {r['slab_min_nu']:.4f} |")
+    if any(r.get("bilateral") for r in rows):
+        print("‡: the statuses cycled (exit 3); solved with Released Nodes = Never (a bilateral roll)")
     for r in rows:
         if r.get("sticking_force") is not None and r.get("fe_force") is not None:
             print(f"sticking ({VARIANTS[r['variant']]}, ν = {r['nu']:g}): slab with Orowan's cap m = 1: force "

@@ -35,7 +35,7 @@ import os
 
 import numpy as np
 
-from . import csvio, rolling_theory, summary as summary_module
+from . import csvio, launcher, rolling_theory, summary as summary_module
 
 WALL, INLET, OUTLET = "roll", "inlet", "outlet"
 COMPARED = ("roll_force", "roll_torque", "neutral_angle", "forward_slip", "contact_length")
@@ -68,6 +68,26 @@ def pass_sets(R=None, h0=None, h1=None, nu=None, law=None, h=None, hc=None, omeg
     elif nu is not None:
         sets.append(f"Boundary Conditions/{WALL}/Friction Coefficient={_lit(nu)}")
     return sets
+
+
+BILATERAL = f"Boundary Conditions/{WALL}/Released Nodes=Never"
+
+
+def run_pass(flowform, case, outdir, sets, timeout=None):
+    """Runs one pass (launcher.run, quiet, output captured, outdir cleaned). When the contact
+    statuses cycle (exit 3, "does not settle") it runs again with the roll bilateral
+    (BILATERAL): the release criterion is the sign of the mean pressure p, which turns negative
+    near the exit under a compressive roll pressure p_n (docs/rolling.md §8; R/h0 ≥ 20 with Coulomb
+    on the contact force). Returns (Run, bilateral)."""
+    r = launcher.run(flowform, case, outdir, list(sets), quiet=True, capture=True, timeout=timeout, clean=True)
+    if r.status == 3 and "does not settle" in ((r.summary or {}).get("message") or ""):
+        return launcher.run(flowform, case, outdir, list(sets) + [BILATERAL], quiet=True, capture=True,
+                            timeout=timeout, clean=True), True
+    return r, False
+
+
+def is_bilateral(summary):
+    return ((summary.get("parameters") or {}).get("Boundary Conditions") or {}).get(WALL, {}).get("Released Nodes") == "Never"
 
 
 class Pass:
