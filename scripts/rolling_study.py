@@ -1,4 +1,4 @@
-"""The rolling scene against the slab method (docs/rolling.md §8, docs/rolling_theory.md): runs
+"""The rolling scene against the slab method (docs/rolling.md §7, docs/rolling_theory.md): runs
 xml/rolling.xml over sets of passes, compares each run with the slab method (Coulomb, on the
 exact arc, rolling_theory.py) at the same R, h0, h1, ν and the model's material, prints a table of
 the relative differences and the trends, and draws the classical pictures.
@@ -16,7 +16,7 @@ Each pass runs once per Coulomb normal force of --normal-force (docs/contact.md 
 multiplies"):
   "Contact Force"  τ = ν σ_n, the normal traction: the slab method's Coulomb law (default here)
   "Pressure"       τ = ν p, the mean pressure: the scene's default (xml/rolling.xml), a friction
-                   about 0.6 ν in the slab's sense (docs/rolling.md §8)
+                   about 0.6 ν in the slab's sense (docs/rolling.md §7)
   both             the two.
 
 Out: OUT/<variant>/<pass>/ (flowform's outputs), OUT/study.csv (one row per run), and the PNGs
@@ -274,11 +274,11 @@ def speed_map(a, plist, tag):
     xy, topo, fields = plotting.read_solution(d)
     tri, _ = plotting.triangulate(xy, topo)
     speed = np.hypot(fields["velocity"][:, 0], fields["velocity"][:, 1])
-    fig, axes = plt.subplots(2, 1, figsize=(11, 6.5))
-    for ax, zoom in zip(axes, (None, (-2.0, 0.4, 0.3, 0.52))):
+    fig, axes = plt.subplots(2, 1, figsize=(11, 5.5), gridspec_kw={"height_ratios": [1, 1.3]})
+    for ax, zoom in zip(axes, (None, (-1.9, 0.3, 0.0, 0.52))):
         im = ax.tripcolor(tri, speed, shading="gouraud", cmap="viridis")
         ax.triplot(tri, lw=0.15, color="w", alpha=0.4)
-        for group, style in (("entry_surface", "r-"), ("exit_surface", "m-"), ("roll", "w-")):
+        for group, style in (("entry_surface", "r-"), ("exit_surface", "m-"), ("roll", "k-")):
             w = plotting.read_wall(d, group)
             if w is not None:
                 ax.plot(w["x"], w["y"], style, lw=1.6, label=group)
@@ -286,7 +286,7 @@ def speed_map(a, plist, tag):
         if zoom:
             ax.set_xlim(*zoom[:2])
             ax.set_ylim(*zoom[2:])
-        fig.colorbar(im, ax=ax, label="|u|")
+        fig.colorbar(im, ax=ax, label="|u|", shrink=0.8)
     axes[0].legend(fontsize=7, loc="lower left")
     axes[0].set_title(f"|u|, {plist[0].name}, Coulomb on the {plist[0].variant.lower()}: the strip surfaces are flat and fixed",
                       fontsize=9)

@@ -10,7 +10,7 @@ bench/rolling_bench.py and tests/regression/rolling_slab_checks.py share.
 The pass (R, h0, h1, ν, ω, the roll centre) and the material are read from the run's
 summary.json "parameters", so the slab solution is always the one of the run's own pass.
 
-**The slab method's flow stress** (docs/rolling.md §8). The scene's material is rate dependent,
+**The slab method's flow stress** (docs/rolling.md §7). The scene's material is rate dependent,
 σ̄ = σ0 + (e_r/γ)^(1/n) (σ0 = γ = 1, n = 5), and the slab method takes one shear yield stress k.
 The reference here is rolling_theory's choice: σ̄ at the time-averaged equivalent strain rate of a
 material point under the arc, e_m = (2/√3) ln(h0/h1) / t_gap, iterated with the slab's own flux
@@ -77,7 +77,7 @@ def run_pass(flowform, case, outdir, sets, timeout=None):
     """Runs one pass (launcher.run, quiet, output captured, outdir cleaned). When the contact
     statuses cycle (exit 3, "does not settle") it runs again with the roll bilateral
     (BILATERAL): the release criterion is the sign of the mean pressure p, which turns negative
-    near the exit under a compressive roll pressure p_n (docs/rolling.md §8; R/h0 ≥ 20 with Coulomb
+    near the exit under a compressive roll pressure p_n (docs/rolling.md §7; R/h0 ≥ 20 with Coulomb
     on the contact force). Returns (Run, bilateral)."""
     r = launcher.run(flowform, case, outdir, list(sets), quiet=True, capture=True, timeout=timeout, clean=True)
     if r.status == 3 and "does not settle" in ((r.summary or {}).get("message") or ""):

@@ -1,4 +1,4 @@
-"""The rolling scene against the slab method (docs/rolling.md §8, docs/rolling_theory.md):
+"""The rolling scene against the slab method (docs/rolling.md §7, docs/rolling_theory.md):
 xml/rolling.xml with Coulomb on the contact force (τ = ν σ_n, the slab's law), on the coarse mesh
 h = 0.1, hc = 0.04 (≈ 1240 dofs), compared with rolling_theory.solve (Coulomb, exact arc, σ̄ at the
 mean strain rate) at the run's own pass through flowform_tools.rolling_compare.
@@ -10,10 +10,10 @@ thickness, the entry corner, the rate term), which is what is measured, not zero
 asserts that the departure d = FE/slab − 1 lies in a band: the range of d measured on the mesh
 family h = 0.1, 0.05, 0.035 (hc = h/2.5; `scripts/rolling_study.py --parts mesh`), widened on
 each side by the last change of d between h = 0.05 and 0.035 (an estimate of the discretization
-error still in the finest d) and by 0.5 % (the run-to-run spread of the contact statuses' path:
-the same pass solved from another start differs by up to 3e-3 in force). The measured values are
-in BANDS' comments. A change of the FE's physics by a few per cent (the friction law, the flow
-stress, the arc) leaves the band: --perturbed compares with the slab method at 1.5 ν and must fail.
+error still in the finest d) and by 0.5 % (headroom, a choice: a tenth of the change of the torque's
+departure from ν = 0.2 to 0.3). The measured values are in BANDS' comments. A change of the FE's physics by a few per cent (the friction law, the flow
+stress, the arc) leaves the band: --perturbed compares the ν = 0.2 run with the slab method at
+1.5 ν and must fail (ctest rolling_slab_perturbed, WILL_FAIL).
 
 nu      (default run, 2 coarse runs, ν = 0.2 and 0.3 at R = 10, h0 = 1, h1 = 0.75)
   1. Roll force and torque within their bands at both ν.
@@ -28,9 +28,10 @@ nu      (default run, 2 coarse runs, ν = 0.2 and 0.3 at R = 10, h0 = 1, h1 = 0.
   4. Mass: the inlet and outlet fluxes differ by what enters through the flat, fixed entry
      surface (docs/rolling.md §5), not hidden: (Q_in − Q_out)/Q_out is negative, above −1 %,
      and the entry surface carries at least 90 % of it (measured −0.50 % and 99.6 %).
-geometry  (slow: 3 coarse runs, ν = 0.3: R = 10, R = 20, and h1 = 0.6 (40 %))
-  Force and torque within their bands at R = 20 and at 40 %; force and torque grow with R/h0 and
-  with the reduction in the FE and in the slab method.
+geometry  (slow: 3 coarse runs, ν = 0.3: R = 10, R = 20, and h1 = 0.9 (10 %))
+  Force and torque within their bands at R = 20 and at 10 %; force and torque grow with R/h0 and
+  with the reduction (10 → 25 %) in the FE and in the slab method. (40 % is not used: on the
+  coarse mesh its inflow balance stalls on a jump of F, exit 3; on h = 0.05 it converges.)
 sticking  (slow: ν = 2, Coulomb on the contact force)
   Force and torque against the slab method with sticking friction (Orowan's cap τ = min(ν p, k),
   = Tresca m = 1 over the arc) within their bands.
@@ -46,14 +47,20 @@ COARSE = ["Error Estimation/Method=None", "Sensitivity/Parameters={}", "Mesh/Geo
 
 # (pass) -> {response: (low, high)} of d = FE/slab − 1 (module doc). Measured d on h = 0.1, 0.05, 0.035:
 BANDS = {
-    # ν = 0.2: force −1.2 %, −2.0 %, −2.2 %; torque +11.2 %, +9.7 %, +9.4 %
-    (10.0, 0.75, 0.2): {"roll_force": (-0.030, -0.002), "roll_torque": (0.080, 0.122)},
-    # ν = 0.3: force ..., torque ...
-    (10.0, 0.75, 0.3): {"roll_force": (-0.030, 0.010), "roll_torque": (0.050, 0.150)},
-    (20.0, 0.75, 0.3): {"roll_force": (-0.030, 0.010), "roll_torque": (0.050, 0.150)},
-    (10.0, 0.6, 0.3): {"roll_force": (-0.030, 0.010), "roll_torque": (0.050, 0.150)},
-    # ν = 2 against the sticking slab (Orowan's cap m = 1)
-    (10.0, 0.75, 2.0): {"roll_force": (-0.10, 0.10), "roll_torque": (-0.10, 0.10)},
+    # ν = 0.2: force −1.3 %, −2.0 %, −2.1 % (last change 0.1 %); torque +11.2 %, +9.7 %, +9.3 % (0.4 %)
+    (10.0, 0.75, 0.2): {"roll_force": (-0.027, -0.007), "roll_torque": (0.084, 0.121)},
+    # ν = 0.3: force −5.3 %, −6.3 %, −6.4 % (0.1 %); torque +6.9 %, +5.2 %, +4.8 % (0.4 %)
+    (10.0, 0.75, 0.3): {"roll_force": (-0.070, -0.047), "roll_torque": (0.039, 0.078)},
+    # R = 20, ν = 0.3: force −6.9 %, −7.6 %, −7.8 % (0.2 %); torque +1.7 %, +0.4 %, +0.1 % (0.3 %)
+    # (h = 0.05, 0.035 with the roll bilateral: the statuses cycle there, not on h = 0.1)
+    (20.0, 0.75, 0.3): {"roll_force": (-0.085, -0.062), "roll_torque": (-0.007, 0.025)},
+    # 10 %, ν = 0.3: force −9.8 %, −11.0 % on h = 0.1, 0.05; torque +12.1 %, +9.6 % (no h = 0.035:
+    # widened by the h = 0.1 → 0.05 change, 1.2 % and 2.5 %, and 0.5 %)
+    (10.0, 0.9, 0.3): {"roll_force": (-0.127, -0.081), "roll_torque": (0.066, 0.151)},
+    # ν = 2 against the sticking slab (Orowan's cap m = 1), the roll bilateral (the statuses cycle):
+    # force −14.3 %, torque +0.5 % on h = 0.1 (widened by the ν = 0.3 pass's h = 0.1 → 0.05 change,
+    # 1.0 % and 1.7 %, and 0.5 %)
+    (10.0, 0.75, 2.0): {"roll_force": (-0.158, -0.128), "roll_torque": (-0.017, 0.027)},
 }
 STICK = 1e-3             # |v/(ωR) − 1| of a node counted as sticking (check 3)
 PEAK_SEGMENTS = 2        # the peak's allowance in wall segments (check 3)
@@ -125,10 +132,11 @@ def hill_and_mass(c):
 
 
 def nu(flowform, source, outdir, perturbed):
-    a, b = run(flowform, source, outdir, nu=0.2), run(flowform, source, outdir, nu=0.3)
+    a = run(flowform, source, outdir, nu=0.2)
+    if perturbed:             # one run: the slab at 1.5 ν must leave the bands
+        return against_slab(a, (10.0, 0.75, 0.2), perturbed)
+    b = run(flowform, source, outdir, nu=0.3)
     failed = against_slab(a, (10.0, 0.75, 0.2), perturbed) + against_slab(b, (10.0, 0.75, 0.3), perturbed)
-    if perturbed:
-        return failed
     failed += trend(a, b, "ν")
     for c in (a, b):
         failed += hill_and_mass(c)
@@ -138,9 +146,9 @@ def nu(flowform, source, outdir, perturbed):
 def geometry(flowform, source, outdir, perturbed):
     base = run(flowform, source, outdir, nu=0.3)
     big = run(flowform, source, outdir, R=20.0, nu=0.3)
-    deep = run(flowform, source, outdir, h1=0.6, nu=0.3)
-    failed = against_slab(big, (20.0, 0.75, 0.3), perturbed) + against_slab(deep, (10.0, 0.6, 0.3), perturbed)
-    failed += trend(base, big, "R/h0") + trend(base, deep, "the reduction")
+    light = run(flowform, source, outdir, h1=0.9, nu=0.3)
+    failed = against_slab(big, (20.0, 0.75, 0.3), perturbed) + against_slab(light, (10.0, 0.9, 0.3), perturbed)
+    failed += trend(base, big, "R/h0") + trend(light, base, "the reduction")
     return failed
 
 
