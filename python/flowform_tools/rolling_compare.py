@@ -27,7 +27,7 @@ the roll pressure. The roll pressure p_n = −n·σ·n = p − n·s·n and the f
 the arc) are recovered here from solution.h5: s = 2μD per cell (P1 velocity gradient,
 "viscosity" cell field), averaged over the cells around each wall node (area weights). The
 recovery is checked against the solver's own roll_force: R∫(p_n cos φ + τ sin φ)dφ over the arc
-(`arc_force`) — 0.3–1 % apart on the scene's meshes (the cells' D is first order).
+(`arc_force`) — 0.1–1.1 % apart on the meshes tried (the cells' D is first order).
 Needs numpy (and h5py for arc_profile's p_n).
 """
 import math
