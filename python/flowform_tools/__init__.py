@@ -22,6 +22,9 @@ tests/regression/, bench/ and scripts/ do not each carry their own launcher and 
              with their error bars and DDM tangents, the tool walls in flow order
   checks     the whole-run checks' one line per check and verdict (tests/regression/)
   benchmark  the benchmarks' channel sizes and one timed run (bench/)
+  rolling_theory   the slab method of flat rolling (docs/rolling_theory.md; numpy)
+  rolling_compare  a rolling run against the slab method at its own pass, the roll pressure
+             along the arc (numpy, h5py; scripts/rolling_study.py, rolling_slab_checks.py)
 
 A scene's own theory lives beside the checks that assert it, not here: tests/regression/
 extrusion/ (slip-line values), tests/regression/cutting/ (the shear plane). The tests of this

@@ -65,3 +65,27 @@ class Median(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ExtrapolateThree(unittest.TestCase):
+    def test_second_order_sequence_on_uneven_meshes(self):
+        # F(h) = 1 + h² on h = 0.1, 0.07, 0.05: the order 2 is recovered and the limit is 1.
+        hs = [0.1, 0.07, 0.05]
+        limit, order, monotone = numerics.extrapolate_three(hs, [1.0 + h * h for h in hs])
+        self.assertTrue(monotone)
+        self.assertAlmostEqual(order, 2.0, places=8)
+        self.assertAlmostEqual(limit, 1.0, places=10)
+
+    def test_order_clamped(self):
+        # F(h) = 1 + h^3: the order 3 is clamped to 2; the lower order takes a larger correction,
+        # which overshoots the limit 1 by less than the last difference.
+        hs = [0.1, 0.07, 0.05]
+        limit, order, monotone = numerics.extrapolate_three(hs, [1.0 + h ** 3 for h in hs])
+        self.assertEqual(order, 2.0)
+        self.assertTrue(1.0 - (0.07 ** 3 - 0.05 ** 3) < limit < 1.0)
+
+    def test_oscillating_is_flagged_with_order_one(self):
+        limit, order, monotone = numerics.extrapolate_three([0.1, 0.07, 0.05], [1.0, 1.1, 1.05])
+        self.assertFalse(monotone)
+        self.assertEqual(order, 1.0)
+        self.assertAlmostEqual(limit, 1.05 + (-0.05) / (0.07 / 0.05 - 1.0), places=12)
