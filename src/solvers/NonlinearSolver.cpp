@@ -66,7 +66,7 @@ static void buildValidParameters(const ValidList& valid) {
              "finite-difference run: when spent, the run ends not converged (exit 3) with the last state written and "
              "the message saying where it was (docs/theory.md §5)",
              nonNegative());
-  valid->set("Rigid Inflow Tolerance", 1e-7,
+  valid->set("Rigid Inflow Tolerance", 1e-9,
              "a Rigid Inflow group's speed is found when its force balance |d·Σ R_i| is at most this × Σ|R_i| over "
              "every node with a prescribed component (Problem::balanceRigidInflow, docs/rolling.md)",
              inRange(1e-14, 1.0));

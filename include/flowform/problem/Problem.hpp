@@ -120,6 +120,11 @@ class Problem {
   /// The linearization of a Rigid Inflow's balance at the converged state, for the sensitivities
   /// (none without a rigid inflow).
   std::optional<RigidInflowLinearization> rigidInflowLinearization();
+  /// −∂f/∂U at x: f(x; U) − f(x; U + 1), f being affine in U (the group's prescribed rows).
+  Teuchos::RCP<Vector> rigidInflowSpeedLoad(const Vector& x);
+  /// The force balance's tangent at x along (dq, h): d·Σ_{i∈group} (∂R_i/∂q dq + ∂R_i/∂h), the
+  /// unconstrained residual's rows of the Rigid Inflow group (h null: none).
+  double rigidInflowForceTangent(const Vector& x, const Vector& dq, const SensitivityParameter* h);
 
   /// What the linearized free-surface update reads and moves: this problem's state.
   SurfaceLinearizationState linearizationState();
