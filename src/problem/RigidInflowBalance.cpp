@@ -31,6 +31,7 @@
 #include <limits>
 #include <sstream>
 
+#include "flowform/contact/WallStates.hpp"
 #include "flowform/core/Budget.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/problem/Problem.hpp"
@@ -43,6 +44,8 @@ namespace {
 constexpr double kCollapsed = 1e-12;
 /// The imbalance accepted at a jump of F, relative to the force scale (Problem::balanceRigidInflow).
 constexpr double kJumpTolerance = 1e-5;
+/// A moving tool skids when every node in contact lags it by more than this share of its speed.
+constexpr double kSkidLag = 0.05;
 
 std::string number(double v) {
   std::ostringstream os;
@@ -245,6 +248,40 @@ RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x
   rep.converged = done(Fb);
   if (!rep.converged)
     return fail("the force balance " + number(Fb) + " stalls above its tolerance " + number(tolerance * scale));
+  // A balance found with the moving tools skidding: where no node in contact keeps up with its
+  // tool, the strip is not rolled but dragged at a crawl (measured: xml/rolling.xml at 40 %
+  // reduction with Coulomb on the mean pressure balances at U = 10⁻³ of the start speed, the strip
+  // 99.9 % slower than the roll). Steady rolling has a neutral point: some part of the contact
+  // moves with the tool or faster.
+  for (const ContactWall& wall : m_walls) {
+    if (!wall.motion().moving()) continue;
+    std::vector<double> p;
+    std::vector<std::array<double, 2>> u;
+    wallValues(wall, *m_dofMap, x, p, u);  // collective
+    double lead = -std::numeric_limits<double>::infinity(), toolSpeed = 0.0;
+    int inContact = 0;
+    for (int k = 0; k < wall.numNodes(); ++k) {
+      if (!wall.isActive(k)) continue;
+      const auto& v = wall.wallVelocity(k);
+      const auto& n = wall.curve().normals[k];
+      const double along = -n[1] * v[0] + n[0] * v[1];  // v_w·t
+      if (along == 0.0) continue;
+      // (u − v_w)·t in the tool's sense of motion, relative to its speed: −1 for material at rest.
+      lead = std::max(lead, wall.relativeSlip(k, u[k].data()) / along);
+      toolSpeed = std::max(toolSpeed, std::abs(along));
+      ++inContact;
+    }
+    if (inContact > 0 && lead < -kSkidLag) {
+      std::ostringstream os;
+      os << "the balance holds at speed " << number(rep.speed) << " with wall '" << wall.curve().name
+         << "' skidding: every one of its " << inContact << " nodes in contact lags the tool by at least "
+         << number(-100.0 * lead) << " % of its speed " << number(toolSpeed)
+         << " (no neutral point): the tool cannot draw the material in at a steady state (Friction Coefficient "
+            "too small for the bite, too much back tension, or a Coulomb law on the mean pressure where the normal "
+            "traction is meant: Coulomb Normal Force = Contact Force; docs/rolling.md)";
+      return fail(os.str());
+    }
+  }
   log() << "rigid inflow '" << inflow.group << "': speed " << std::setprecision(10) << rep.speed << std::setprecision(6)
         << " (force " << Fb << ", " << rep.solves << " re-solves, " << rep.newtonIterations
         << " Newton iterations)\n";

@@ -1,7 +1,7 @@
 """Stress battery of the nonlinear solve: cases at the edges of the parameter ranges a user
 may set, each of which must converge (exit 0, converged: true) and give finite responses.
 Each case is one line of CASES: a name, the case file and its --set overrides. A group
-(`channel`, `extrusion`, `grid` — the last under the slow label) is one ctest test (tests/regression/Stress.cmake).
+(`channel`, `extrusion`, `rolling`, `grid` — the last under the slow label) is one ctest test (tests/regression/Stress.cmake).
 
     stress_checks.py GROUP FLOWFORM SOURCE_DIR OUT_DIR
 
@@ -33,6 +33,16 @@ def walls(case_file, key, value):
 def extrusion(name, source, *sets, walls_set=None):
     extra = walls(os.path.join(source, EX), *walls_set) if walls_set else []
     return (name, EX, COARSE + list(sets) + extra)
+
+
+RO = "xml/rolling.xml"
+
+
+def rolling(name, *sets, R=10.0, h1=0.75):
+    """xml/rolling.xml without its estimate and sensitivities, the inflow started at ωR h1/h0."""
+    return (name, RO, ["Error Estimation/Method=None", "Sensitivity/Parameters={}",
+                       f"Mesh/Geo Parameters/R={R!r}", f"Mesh/Geo Parameters/h1={h1!r}",
+                       f"Boundary Conditions/inlet/Velocity X={R * h1!r}"] + list(sets))
 
 
 def groups(source):
@@ -71,6 +81,16 @@ def groups(source):
              + walls(os.path.join(source, EX), "Friction Coefficient", "0.2")),
             channel("gamma_1e6", "Material/Rate Constant=1e6"),
         ],
+        # Rolling (docs/rolling.md §9): ν from just above the steady limit (0.085–0.09) to 0.5,
+        # reductions 5–40 %, R/h0 5 and 20, back and front tension.
+        "rolling": [rolling("nu_0.1", "Boundary Conditions/roll/Friction Coefficient=0.1"),
+                    rolling("nu_0.5", "Boundary Conditions/roll/Friction Coefficient=0.5"),
+                    rolling("reduction_5", h1=0.95),
+                    rolling("reduction_40", h1=0.6),
+                    rolling("R_5", R=5.0),
+                    rolling("R_20", R=20.0),
+                    rolling("back_tension_0.2", "Boundary Conditions/inlet/Traction X=-0.2"),
+                    rolling("front_tension_0.3", "Boundary Conditions/outlet/Traction X=0.3")],
         # The grids of issue #10 (slow label): the channel over γ × e0 × n, the extrusion over
         # ν × κ_t, plane and axisymmetric.
         "grid": [channel(f"channel_gamma_{g}_e0_{e}_n_{n}", f"Material/Rate Constant={g}",
