@@ -42,7 +42,9 @@ geometry (R = 20, h1 = 0.8 by the Geo Parameters and the inflow's start speed ω
   ω × Tool Torque to 1e-12; the neutral point inside this pass's arc, 0 < θ_n < α = 7.25°.
 bite (ν = 0.05: below the steady rolling limit of this scene, measured between 0.085 and 0.09; the slab
   method's 0.079)
-  Exit 3, the message saying the roll cannot draw the strip in.
+  Exit 3, the message saying the roll cannot draw the strip in; and with Coulomb on the mean pressure
+  at 40 % reduction (h1 = 0.6), where the balance holds only at 10⁻³ of the start speed with the roll
+  skidding over the whole arc, exit 3 saying it skids (no neutral point).
 bad_input
   Exit 2 with the group named: a Rigid Inflow without Velocity Y; a Neutral Angle and a Forward
   Slip on a fixed wall (the extrusion's container); a Forward Slip whose Exit Boundary is no group.
@@ -183,8 +185,18 @@ def bite(flowform, source, outdir, perturbed):
             expect=3)
     message = r.summary["message"]
     print(message)
-    return checks.check("cannot draw it in" in message and not r.summary["converged"],
-                        "nu = 0.05: exit 3, the roll cannot draw the strip in")
+    failed = checks.check("cannot draw it in" in message and not r.summary["converged"],
+                          "nu = 0.05: exit 3, the roll cannot draw the strip in")
+    # Coulomb on the mean pressure at 40 % reduction: the balance holds only at 1e-3 of the start
+    # speed with the roll skidding over the whole arc (docs/rolling.md §4): not steady rolling.
+    r = run(flowform, case, os.path.join(outdir, "skid"),
+            ["Sensitivity/Parameters={}", "Boundary Conditions/roll/Coulomb Normal Force=Pressure",
+             "Mesh/Geo Parameters/h1=0.6", "Boundary Conditions/inlet/Velocity X=6.0"], expect=3)
+    message = r.summary["message"]
+    print(message)
+    failed += checks.check("skidding" in message and "no neutral point" in message and not r.summary["converged"],
+                           "Coulomb on the mean pressure at 40 %: exit 3, the roll skids")
+    return failed
 
 
 def bad_input(flowform, source, outdir, perturbed):
