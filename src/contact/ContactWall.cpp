@@ -338,6 +338,20 @@ void ContactWall::setScales(std::vector<double> viscosity, std::vector<double> f
   m_flowStress = std::move(flowStress);
 }
 
+double ContactWall::compression(int k, const std::vector<double>& p, const std::vector<std::array<double, 2>>& u) const {
+  // Not on a wall whose released nodes become a free surface (the cutting rake): there the
+  // traction criterion moved the chip's separation point between nearby runs (the total
+  // dF_c/dν by DDM and by re-converged differences disagreed), the mean pressure does not.
+  if (!m_settings.coulombOnContactForce || m_settings.releasedFreeSurface) return p[k];
+  // The penalty's normal force α_n (u − v_w)·n over the node's lumped area W_k ℓ_k (ℓ_k half its
+  // segments' lengths): the normal traction the wall carries there, compression positive.
+  double lumped = 0.0;
+  for (int o : {previous(k), next(k)})
+    if (o >= 0) lumped += 0.5 * std::hypot(m_coords[o][0] - m_coords[k][0], m_coords[o][1] - m_coords[k][1]);
+  if (!(lumped > 0.0)) return p[k];
+  return m_settings.normalPenalty * m_viscosity[k] * relativeNormalVelocity(k, u[k]) / lumped;
+}
+
 double ContactWall::violation(int k, const std::vector<double>& p, const std::vector<std::array<double, 2>>& u,
                               double pressureTolerance, double penetrationTolerance) const {
   constexpr double kNone = -std::numeric_limits<double>::infinity();
@@ -345,7 +359,7 @@ double ContactWall::violation(int k, const std::vector<double>& p, const std::ve
   if (m_active[k] == kComplementary) return kNone;  // decided inside Newton
   const double un = relativeNormalVelocity(k, u[k]);  // (u − v_w)·n
   if (m_active[k] == kSelfDeciding) return -un - penetrationTolerance;  // it leaves the tool: free
-  if (m_active[k] == kActive) return -p[k] - pressureTolerance;          // tension beyond the tolerance
+  if (m_active[k] == kActive) return -compression(k, p, u) - pressureTolerance;  // tension beyond the tolerance
   if (gap(k) > 1e-9 * m_curve.arcLength.back()) return kNone;  // off the tool: the surface update brings it back
   double v = un - penetrationTolerance;                        // moving into the tool
   for (size_t c = 0; c < m_cornerNormals[k].size(); ++c) {  // convex tool corner: into every half-plane

@@ -81,14 +81,16 @@ def groups(source):
              + walls(os.path.join(source, EX), "Friction Coefficient", "0.2")),
             channel("gamma_1e6", "Material/Rate Constant=1e6"),
         ],
-        # Rolling (docs/rolling.md §9): ν from just above the steady limit (0.085–0.09) to 0.5,
-        # reductions 5–40 %, R/h0 5 and 20, back and front tension.
+        # Rolling (docs/rolling.md §9): ν from just above the steady limit (0.085–0.09) to 0.5 and
+        # the sticking limit 2, reductions 5–40 %, R/h0 5, 20, 50, back and front tension.
         "rolling": [rolling("nu_0.1", "Boundary Conditions/roll/Friction Coefficient=0.1"),
                     rolling("nu_0.5", "Boundary Conditions/roll/Friction Coefficient=0.5"),
                     rolling("reduction_5", h1=0.95),
                     rolling("reduction_40", h1=0.6),
                     rolling("R_5", R=5.0),
                     rolling("R_20", R=20.0),
+                    rolling("R_50", R=50.0),
+                    rolling("nu_2_sticking", "Boundary Conditions/roll/Friction Coefficient=2.0"),
                     rolling("back_tension_0.2", "Boundary Conditions/inlet/Traction X=-0.2"),
                     rolling("front_tension_0.3", "Boundary Conditions/outlet/Traction X=0.3")],
         # The grids of issue #10 (slow label): the channel over γ × e0 × n, the extrusion over

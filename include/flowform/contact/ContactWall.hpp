@@ -335,6 +335,13 @@ class ContactWall {
   template <typename Scalar>
   Scalar contactMeasure(int j, const Scalar* uj, bool& inContact) const;
   double weight(int k) const;  ///< W_k: 2π r_k or 1
+  /// What the status loop compares with the Pressure Tolerance at an active node (compression
+  /// positive): the mean pressure p_k (the paper's criterion), or on a wall whose Coulomb law
+  /// multiplies the contact force (Coulomb Normal Force = Contact Force) and whose released nodes
+  /// stay on the tool's side (not Released Nodes = Free Surface) the normal traction that force
+  /// carries — the two differ by s_nn, ≈ −k on a yielding surface, so that p < 0 where the
+  /// tool still presses (a roll's arc).
+  double compression(int k, const std::vector<double>& p, const std::vector<std::array<double, 2>>& u) const;
   /// Reads Tool Motion and its entries from the validated `list` (`given`: the case's own entries,
   /// for the warnings); InputError naming the group for a rotation in axisymmetry or a radial
   /// axisymmetric translation.
