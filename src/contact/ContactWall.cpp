@@ -6,6 +6,8 @@
 #include <sstream>
 #include <limits>
 
+#include <Teuchos_SerialDenseMatrix.hpp>
+#include <Teuchos_SerialDenseSolver.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/contact/ToolCorners.hpp"
@@ -219,40 +221,26 @@ void ContactWall::fitRotationCentre(const std::string& group, const Teuchos::Par
     mx += mesh.coords[node][0] / n;
     my += mesh.coords[node][1] / n;
   }
-  double A[3][3] = {}, b[3] = {};
+  Teuchos::SerialDenseMatrix<int, double> A(3, 3), b(3, 1), sol(3, 1);
   double extent = 0.0;
   for (GO node : m_curve.nodes) {
     const double x = mesh.coords[node][0] - mx, y = mesh.coords[node][1] - my;
     const double row[3] = {x, y, 1.0}, rhs = -(x * x + y * y);
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) A[i][j] += row[i] * row[j];
-      b[i] += row[i] * rhs;
+      for (int j = 0; j < 3; ++j) A(i, j) += row[i] * row[j];
+      b(i, 0) += row[i] * rhs;
     }
     extent = std::max(extent, std::hypot(x, y));
   }
-  // Gaussian elimination with partial pivoting; a straight wall makes the system singular.
-  int perm[3] = {0, 1, 2};
-  for (int c = 0; c < 3; ++c) {
-    int best = c;
-    for (int r = c + 1; r < 3; ++r)
-      if (std::abs(A[perm[r]][c]) > std::abs(A[perm[best]][c])) best = r;
-    std::swap(perm[c], perm[best]);
-    for (int r = c + 1; r < 3; ++r) {
-      const double f = A[perm[r]][c] / A[perm[c]][c];
-      for (int j = c; j < 3; ++j) A[perm[r]][j] -= f * A[perm[c]][j];
-      b[perm[r]] -= f * b[perm[c]];
-    }
-  }
-  double sol[3];
-  for (int c = 2; c >= 0; --c) {
-    double v = b[perm[c]];
-    for (int j = c + 1; j < 3; ++j) v -= A[perm[c]][j] * sol[j];
-    sol[c] = v / A[perm[c]][c];
-  }
-  const std::array<double, 2> centre{mx - 0.5 * sol[0], my - 0.5 * sol[1]};
+  // A straight wall makes the normal equations singular.
+  Teuchos::SerialDenseSolver<int, double> solver;
+  solver.setMatrix(Teuchos::rcpFromRef(A));
+  solver.setVectors(Teuchos::rcpFromRef(sol), Teuchos::rcpFromRef(b));
+  const bool solved = solver.factor() == 0 && solver.solve() == 0;
+  const std::array<double, 2> centre{mx - 0.5 * sol(0, 0), my - 0.5 * sol(1, 0)};
   const double radius = std::hypot(centre[0] - mx, centre[1] - my);
-  // A straight wall: no pivot, or a "circle" far larger than the wall (its sagitta below round-off).
-  if (!std::isfinite(centre[0]) || !std::isfinite(centre[1]) || !(radius < 1e6 * extent))
+  // A straight wall: no solution, or a "circle" far larger than the wall (its sagitta below round-off).
+  if (!solved || !std::isfinite(centre[0]) || !std::isfinite(centre[1]) || !(radius < 1e6 * extent))
     throw InputError(where + ": the Rotation Centre is not given and the wall's nodes lie on a straight line, "
                      "not on a circle; give Rotation Centre X and Y");
   m_settings.motion.centre = centre;

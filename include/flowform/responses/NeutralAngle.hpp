@@ -75,9 +75,7 @@ struct NeutralAngle {
     }
     // No sign change: the slip's sign at the downstream end says which way the contact slips, the
     // tool's motion giving the positive sense of t there.
-    const auto& vw = wall.wallVelocity(order.front());
-    const auto& nk = wall.curve().normals[order.front()];
-    const double along = -nk[1] * vw[0] + nk[0] * vw[1];  // v_w·t: the tool's motion along t
+    const double along = wall.wallTangentialSpeed(order.front());  // v_w·t: the tool's motion along t
     const bool outruns = (slip[order.front()] > 0.0) == (along > 0.0);
     return Scalar(outruns ? theta(order.back()) : theta(order.front()));
   }
