@@ -65,6 +65,12 @@ DISSIPATION = ("plastic_power", "friction_power", "penalty_power", "stabilizatio
 BASE = ["Error Estimation/Method=None"]
 
 
+def neutral_point_inside(f, alpha):
+    """1 (failed) unless the Neutral Angle lies inside the arc of bite angle alpha (degrees)."""
+    return checks.check(0.0 < f["neutral_angle"] < alpha,
+                        f"the neutral point lies inside the arc: 0 < {f['neutral_angle']:.4f} < {alpha:.4f} deg")
+
+
 def run(flowform, case, outdir, sets, expect=0):
     r = launcher.run(flowform, case, outdir, BASE + sets, quiet=True, capture=True)
     if r.status != expect:
@@ -108,8 +114,7 @@ def scene(flowform, source, outdir, perturbed):
     omega = abs(f["roll_power"] - OMEGA * f["roll_torque"]) / f["roll_power"]
     failed += checks.check(omega <= 1e-12, f"Tool Power = omega x Tool Torque (relative {omega:.1e})")
     alpha = 1.0 if perturbed else ALPHA
-    failed += checks.check(0.0 < f["neutral_angle"] < alpha,
-                           f"the neutral point lies inside the arc: 0 < {f['neutral_angle']:.4f} < {alpha:.4f} deg")
+    failed += neutral_point_inside(f, alpha)
     failed += checks.check(f["forward_slip"] > 0.0, f"the forward slip {f['forward_slip']:.5f} is positive")
     if perturbed:
         return failed
@@ -137,8 +142,7 @@ def tension(flowform, source, outdir, perturbed):
     print(f"tensions: roll force {f['roll_force']:.6f}, torque {f['roll_torque']:.6f}, neutral angle "
           f"{f['neutral_angle']:.4f} deg, forward slip {f['forward_slip']:.5f}, traction power {traction:.6f}")
     failed = checks.check(balance <= 1e-8, f"Tool Power + traction power = dissipation (relative {balance:.1e} <= 1e-8)")
-    failed += checks.check(0.0 < f["neutral_angle"] < ALPHA,
-                           f"the neutral point lies inside the arc: 0 < {f['neutral_angle']:.4f} < {ALPHA:.4f} deg")
+    failed += neutral_point_inside(f, ALPHA)
     return failed
 
 
@@ -174,8 +178,7 @@ def geometry(flowform, source, outdir, perturbed):
           f"{f['neutral_angle']:.4f} deg (bite {alpha:.4f}), forward slip {f['forward_slip']:.5f}")
     power = abs(f["roll_power"] - OMEGA * f["roll_torque"]) / abs(f["roll_power"])
     failed = checks.check(power <= 1e-12, f"Tool Power = omega x Tool Torque about the fitted centre ({power:.1e})")
-    failed += checks.check(0.0 < f["neutral_angle"] < alpha,
-                           f"the neutral point lies inside the arc: 0 < {f['neutral_angle']:.4f} < {alpha:.4f} deg")
+    failed += neutral_point_inside(f, alpha)
     return failed
 
 
