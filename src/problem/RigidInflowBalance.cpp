@@ -53,6 +53,51 @@ std::string number(double v) {
   return os.str();
 }
 
+/// This rank's share of d · Σ_{i ∈ group} v_i over the group's owned nodes (v_i the velocity
+/// entries of node i): the force balance's F on a residual, its tangent on a residual's tangent.
+double alongGroup(const Vector& v, const BoundaryCurve& group, const std::array<double, 2>& d, const DofMap& dofMap) {
+  auto view = v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  double local = 0.0;
+  for (GO node : group.nodes) {
+    const LO n = dofMap.overlapIndex(node);
+    if (n < 0 || !dofMap.ownsNode(n)) continue;
+    local += d[0] * view(dofMap.dof(n, kUx), 0) + d[1] * view(dofMap.dof(n, kUy), 0);
+  }
+  return local;
+}
+
+/// Empty, or why the converged state is no steady rolling: a moving wall skids — every node in
+/// contact lags its tool by more than kSkidLag of the tool's speed (no neutral point). Steady
+/// rolling has one: some part of the contact moves with the tool or faster. Measured:
+/// xml/rolling.xml at 40 % reduction with Coulomb on the mean pressure balances at U = 10⁻³ of
+/// the start speed, the strip 99.9 % slower than the roll. Collective (wallValues).
+std::string skiddingWall(const std::vector<ContactWall>& walls, const DofMap& dofMap, const Vector& x) {
+  for (const ContactWall& wall : walls) {
+    if (!wall.motion().moving()) continue;
+    std::vector<double> p;
+    std::vector<std::array<double, 2>> u;
+    wallValues(wall, dofMap, x, p, u);
+    double lead = -std::numeric_limits<double>::infinity(), toolSpeed = 0.0;
+    int inContact = 0;
+    for (int k = 0; k < wall.numNodes(); ++k) {
+      const double along = wall.wallTangentialSpeed(k);  // v_w·t
+      if (!wall.isActive(k) || along == 0.0) continue;
+      // (u − v_w)·t in the tool's sense of motion, relative to its speed: −1 for material at rest.
+      lead = std::max(lead, wall.relativeSlip(k, u[k].data()) / along);
+      toolSpeed = std::max(toolSpeed, std::abs(along));
+      ++inContact;
+    }
+    if (inContact > 0 && lead < -kSkidLag) {
+      std::ostringstream os;
+      os << "wall '" << wall.curve().name << "' skidding: every one of its " << inContact
+         << " nodes in contact lags the tool by at least " << number(-100.0 * lead) << " % of its speed "
+         << number(toolSpeed);
+      return os.str();
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics) {
@@ -70,13 +115,8 @@ RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x
   auto force = [&](double& scale) {
     Vector r(m_dofMap->ownedMap());
     m_assembler->residual(x, r, false);
+    double local[2] = {alongGroup(r, curve, d, *m_dofMap), 0.0};
     auto view = r.getLocalViewHost(Tpetra::Access::ReadOnly);
-    double local[2] = {0.0, 0.0};
-    for (GO node : curve.nodes) {
-      const LO n = m_dofMap->overlapIndex(node);
-      if (n < 0 || !m_dofMap->ownsNode(n)) continue;
-      local[0] += d[0] * view(m_dofMap->dof(n, kUx), 0) + d[1] * view(m_dofMap->dof(n, kUy), 0);
-    }
     const auto& constraints = m_bcs->constraints();
     for (LO n = 0; n < m_dofMap->numOwnedNodes(); ++n)
       if (constraints[n].kind != NodeConstraint::Kind::None)
@@ -86,27 +126,32 @@ RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x
     scale = global[1];
     return global[0];
   };
-  // The converged flow at speed U from the last state; false when the re-solve failed.
-  std::string failure;
-  // Each trial starts from the tangent predictor x + (U − U_x) g, J g = −∂f/∂U with the factors of
-  // the last converged solve (one back-substitution): the flow's first-order response to the new
-  // inflow speed. Imposing only the new speed on the group's nodes instead leaves a jump across
-  // its first layer of cells that Newton must damp away (measured on xml/rolling.xml at R = 20:
-  // |F| 1.3·10³ at the start, 340 Newton iterations for a 5 % change of U).
   // g and the balance's slope dF/dU = dF/dq g at the current converged state (the smooth part of the
   // slope: at fixed contact statuses), with the exact tangent factored there (one factorization per
   // trial; the last Newton iterate's factors may belong to another linearization or contact state:
   // measured on xml/rolling.xml, a slope of −7·10⁻⁴ from them against 0.54 from the tangent). The
-  // next trial's simplified Newton reuses these factors.
+  // next trial's simplified Newton reuses these factors. Computed when a trial is proposed, so the
+  // state the balance ends on is not linearized for nothing.
   Vector g(m_dofMap->ownedMap());
   double slope = 0.0;
+  bool linearized = false;
   auto linearize = [&] {
+    if (linearized) return;
     m_model->restartLinearization();
     m_model->computeJacobian(x);
     m_model->solve(*rigidInflowSpeedLoad(x), g);
     slope = rigidInflowForceTangent(x, g, nullptr);
+    linearized = true;
   };
+  // The converged flow at speed U from the last state; false when the re-solve failed. It starts
+  // from the tangent predictor x + (U − U_x) g (the factors at x, one back-substitution): the
+  // flow's first-order response to the new inflow speed. Imposing only the new speed on the
+  // group's nodes instead leaves a jump across its first layer of cells that Newton must damp
+  // away (measured on xml/rolling.xml at R = 20: |F| 1.3·10³ at the start, 340 Newton iterations
+  // for a 5 % change of U).
+  std::string failure;
   auto solveAt = [&](double U) {
+    linearize();
     x.update(U - m_bcs->rigidInflow().speed, g, 1.0);
     m_bcs->setRigidInflowSpeed(m_mesh, U);
     m_bcs->imposeOnSolution(x);
@@ -119,12 +164,13 @@ RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x
     rep.newtonIterations += r.newtonIterations;
     rep.newtonPerSolve.push_back(r.newtonIterations);
     if (!r.converged) failure = r.message;
-    if (r.converged) linearize();
+    linearized = false;  // x moved
     return r.converged;
   };
   // Newton's proposal U − F/(dF/dU) from the current state, when the slope says F rises with U (a
   // strip driven by friction) and the step is less than half the speed; NaN otherwise.
   auto newtonProposal = [&](double U, double F) {
+    linearize();
     const double step = -F / slope;
     return slope > 0.0 && std::isfinite(step) && std::abs(step) < 0.5 * std::abs(U)
                ? U + step
@@ -140,7 +186,6 @@ RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x
   };
 
   double scale = 0.0;
-  linearize();
   double Fa = force(scale), Ua = inflow.speed;
   rep.history.push_back({Ua, Fa});
   auto done = [&](double F) { return std::abs(F) <= tolerance * scale; };
@@ -248,40 +293,12 @@ RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x
   rep.converged = done(Fb);
   if (!rep.converged)
     return fail("the force balance " + number(Fb) + " stalls above its tolerance " + number(tolerance * scale));
-  // A balance found with the moving tools skidding: where no node in contact keeps up with its
-  // tool, the strip is not rolled but dragged at a crawl (measured: xml/rolling.xml at 40 %
-  // reduction with Coulomb on the mean pressure balances at U = 10⁻³ of the start speed, the strip
-  // 99.9 % slower than the roll). Steady rolling has a neutral point: some part of the contact
-  // moves with the tool or faster.
-  for (const ContactWall& wall : m_walls) {
-    if (!wall.motion().moving()) continue;
-    std::vector<double> p;
-    std::vector<std::array<double, 2>> u;
-    wallValues(wall, *m_dofMap, x, p, u);  // collective
-    double lead = -std::numeric_limits<double>::infinity(), toolSpeed = 0.0;
-    int inContact = 0;
-    for (int k = 0; k < wall.numNodes(); ++k) {
-      if (!wall.isActive(k)) continue;
-      const auto& v = wall.wallVelocity(k);
-      const auto& n = wall.curve().normals[k];
-      const double along = -n[1] * v[0] + n[0] * v[1];  // v_w·t
-      if (along == 0.0) continue;
-      // (u − v_w)·t in the tool's sense of motion, relative to its speed: −1 for material at rest.
-      lead = std::max(lead, wall.relativeSlip(k, u[k].data()) / along);
-      toolSpeed = std::max(toolSpeed, std::abs(along));
-      ++inContact;
-    }
-    if (inContact > 0 && lead < -kSkidLag) {
-      std::ostringstream os;
-      os << "the balance holds at speed " << number(rep.speed) << " with wall '" << wall.curve().name
-         << "' skidding: every one of its " << inContact << " nodes in contact lags the tool by at least "
-         << number(-100.0 * lead) << " % of its speed " << number(toolSpeed)
-         << " (no neutral point): the tool cannot draw the material in at a steady state (Friction Coefficient "
-            "too small for the bite, too much back tension, or a Coulomb law on the mean pressure where the normal "
-            "traction is meant: Coulomb Normal Force = Contact Force; docs/rolling.md)";
-      return fail(os.str());
-    }
-  }
+  const std::string skid = skiddingWall(m_walls, *m_dofMap, x);
+  if (!skid.empty())
+    return fail("the balance holds at speed " + number(rep.speed) + " with " + skid +
+                " (no neutral point): the tool cannot draw the material in at a steady state (Friction Coefficient "
+                "too small for the bite, too much back tension, or a Coulomb law on the mean pressure where the "
+                "normal traction is meant: Coulomb Normal Force = Contact Force; docs/rolling.md)");
   log() << "rigid inflow '" << inflow.group << "': speed " << std::setprecision(10) << rep.speed << std::setprecision(6)
         << " (force " << Fb << ", " << rep.solves << " re-solves, " << rep.newtonIterations
         << " Newton iterations)\n";
@@ -341,13 +358,7 @@ double Problem::rigidInflowForceTangent(const Vector& x, const Vector& dq, const
   const std::array<double, 2> d = inflow.direction;
   Vector dR(m_dofMap->ownedMap());
   m_assembler->tangent(x, &dq, h, dR, false);
-  auto view = dR.getLocalViewHost(Tpetra::Access::ReadOnly);
-  double local = 0.0;
-  for (GO node : curve.nodes) {
-    const LO n = m_dofMap->overlapIndex(node);
-    if (n < 0 || !m_dofMap->ownsNode(n)) continue;
-    local += d[0] * view(m_dofMap->dof(n, kUx), 0) + d[1] * view(m_dofMap->dof(n, kUy), 0);
-  }
+  const double local = alongGroup(dR, curve, d, *m_dofMap);
   double global = 0.0;
   Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
   return global;
