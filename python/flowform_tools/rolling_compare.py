@@ -43,11 +43,6 @@ SLAB_OF = {"roll_force": "force", "roll_torque": "torque", "neutral_angle": "neu
            "forward_slip": "forward_slip", "contact_length": "contact_length"}
 
 
-def _lit(x):
-    s = repr(float(x))
-    return s if ("." in s or "e" in s) else s + ".0"
-
-
 def pass_sets(R=None, h0=None, h1=None, nu=None, law=None, h=None, hc=None, omega=1.0,
               defaults=(10.0, 1.0, 0.75)):
     """The --set overrides of one pass of xml/rolling.xml: Geo Parameters R, h0, h1 (those given),
@@ -59,12 +54,12 @@ def pass_sets(R=None, h0=None, h1=None, nu=None, law=None, h=None, hc=None, omeg
     sets = []
     for name, v in (("R", R), ("h0", h0), ("h1", h1), ("h", h), ("hc", hc)):
         if v is not None:
-            sets.append(f"Mesh/Geo Parameters/{name}={_lit(v)}")
-    sets.append(f"Boundary Conditions/{INLET}/Velocity X={_lit(omega * Rv * h1v / h0v)}")
+            sets.append(f"Mesh/Geo Parameters/{name}={launcher.lit(v)}")
+    sets.append(f"Boundary Conditions/{INLET}/Velocity X={launcher.lit(omega * Rv * h1v / h0v)}")
     if law == "Tresca":
-        sets += [f"Boundary Conditions/{WALL}/Friction Law=Tresca", f"Boundary Conditions/{WALL}/Shear Factor={_lit(nu)}"]
+        sets += [f"Boundary Conditions/{WALL}/Friction Law=Tresca", f"Boundary Conditions/{WALL}/Shear Factor={launcher.lit(nu)}"]
     elif nu is not None:
-        sets.append(f"Boundary Conditions/{WALL}/Friction Coefficient={_lit(nu)}")
+        sets.append(f"Boundary Conditions/{WALL}/Friction Coefficient={launcher.lit(nu)}")
     return sets
 
 
