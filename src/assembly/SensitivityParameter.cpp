@@ -17,8 +17,8 @@ struct Known {
 const Known kFriction[] = {{"Friction Coefficient", "nu", ParameterKind::FrictionCoefficient},
                            {"Shear Factor", "m", ParameterKind::ShearFactor}};
 
-/// The friction parameters (per wall as well), then the sensitivity parameters of law `law`.
-std::string allowedNames(const std::vector<ContactWall>& walls, int law) {
+/// The friction parameters (per wall as well), the sensitivity parameters of law `law`, the Geo Parameters.
+std::string allowedNames(const std::vector<ContactWall>& walls, int law, const GeoParameterValues& geo) {
   std::string list;
   for (const Known& k : kFriction) {
     list += std::string(list.empty() ? "" : ", ") + "'" + k.name + "'";
@@ -26,7 +26,9 @@ std::string allowedNames(const std::vector<ContactWall>& walls, int law) {
   }
   for (const MaterialParameterInfo& p : materialLaws()[law].parameters)
     if (p.sensitivity) list += ", '" + std::string(p.name) + "'";
+  for (const auto& [name, value] : geo) list += ", 'Geo Parameter:" + name + "'";
   if (walls.empty()) list += " (the friction parameters need contact walls; this case has none)";
+  if (geo.empty()) list += " (a 'Geo Parameter:<name>' needs the name in Mesh/Geo Parameters; this case gives none)";
   return list;
 }
 
@@ -42,12 +44,26 @@ std::string otherLawWith(const std::string& name, int law) {
 }  // namespace
 
 SensitivityParameter parseSensitivityParameter(const std::string& name, const std::vector<ContactWall>& walls,
-                                               int law) {
+                                               int law, const GeoParameterValues& geo) {
   const std::string where = "Sensitivity/Parameters: '" + name + "'";
   const size_t colon = name.find(':');
   const std::string base = name.substr(0, colon);
   SensitivityParameter h;
   h.name = name;
+  if (base == "Geo Parameter") {
+    const std::string geoName = colon == std::string::npos ? std::string() : name.substr(colon + 1);
+    for (const auto& [given, value] : geo)
+      if (given == geoName) {
+        h.kind = ParameterKind::GeoParameter;
+        h.symbol = geoName;
+        h.geoName = geoName;
+        h.geoValue = value;
+        h.relativeStep = true;
+        return h;
+      }
+    throw InputError(where + ": '" + geoName + "' is not given in Mesh/Geo Parameters (a shape parameter must be " +
+                     "set there, with the .geo's DefineConstant of that name); allowed: " + allowedNames(walls, law, geo));
+  }
   const std::vector<MaterialParameterInfo>& own = materialLaws()[law].parameters;
   for (size_t i = 0; i < own.size(); ++i)
     if (own[i].sensitivity && base == own[i].name) {
@@ -59,7 +75,7 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
   if (h.material >= 0) {
     if (colon != std::string::npos)
       throw InputError(where + ": '" + base + "' is one value for the whole body, not per wall; allowed: " +
-                       allowedNames(walls, law));
+                       allowedNames(walls, law, geo));
     return h;
   }
   const Known* known = nullptr;
@@ -69,20 +85,20 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
     const std::string other = otherLawWith(base, law);
     if (!other.empty())
       throw InputError(where + " is a parameter of material law '" + other + "', but the case's Material/Law is '" +
-                       materialLaws()[law].name + "'; allowed: " + allowedNames(walls, law));
-    throw InputError(where + " is not a parameter; allowed: " + allowedNames(walls, law));
+                       materialLaws()[law].name + "'; allowed: " + allowedNames(walls, law, geo));
+    throw InputError(where + " is not a parameter; allowed: " + allowedNames(walls, law, geo));
   }
   h.symbol = known->symbol;
   h.kind = known->kind;
   if (walls.empty())
     throw InputError(where + " is a friction parameter, but the case has no contact wall; allowed: " +
-                     allowedNames(walls, law));
+                     allowedNames(walls, law, geo));
   if (colon != std::string::npos) {
     const std::string group = name.substr(colon + 1);
     for (size_t w = 0; w < walls.size(); ++w)
       if (walls[w].name() == group) h.wall = static_cast<int>(w);
     if (h.wall < 0)
-      throw InputError(where + ": '" + group + "' is not a contact wall; allowed: " + allowedNames(walls, law));
+      throw InputError(where + ": '" + group + "' is not a contact wall; allowed: " + allowedNames(walls, law, geo));
     h.symbol += "_" + group;
   }
   bool enters = false;
@@ -94,12 +110,14 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
 }
 
 double SensitivityParameter::finiteDifferenceStep(double s, const FlowPhysics& physics) const {
+  if (isGeo()) return geoValue != 0.0 ? s * std::abs(geoValue) : s;
   if (isFriction() || !relativeStep) return s;
   const double value = std::abs(physics.material.values[material]);
   return value > 0.0 ? s * value : s;
 }
 
 double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics, const std::vector<ContactWall>& walls) {
+  if (h.isGeo()) return h.geoValue;
   if (!h.isFriction()) return physics.material.values[h.material];
   for (size_t w = 0; w < walls.size(); ++w)
     if (h.entersWall(static_cast<int>(w), walls[w])) {
@@ -110,6 +128,7 @@ double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics,
 }
 
 void shiftParameter(const SensitivityParameter& h, double delta, FlowPhysics& physics, std::vector<ContactWall>& walls) {
+  if (h.isGeo()) return;  // a shape: the mesh moves (sensitivity/PerturbedSolve)
   if (!h.isFriction()) {
     physics.material.values[h.material] += delta;
     return;

@@ -202,29 +202,24 @@ void ContactWall::readToolMotion(const std::string& group, const Teuchos::Parame
   }
 }
 
-void ContactWall::fitRotationCentre(const std::string& group, const Teuchos::ParameterList& given,
-                                    const Mesh& mesh) {
-  if (m_settings.motion.kind != ToolMotion::Kind::Rotation || given.isParameter("Rotation Centre X") ||
-      given.isParameter("Rotation Centre Y"))
-    return;
-  // Kåsa's algebraic fit: the circle x² + y² + D x + E y + F = 0 that minimizes the sum of its
-  // squared residuals at the nodes, in coordinates relative to the nodes' mean (so that the 3×3
-  // normal equations stay well conditioned for a short arc of a large roll); centre (−D/2, −E/2).
-  // Exact for nodes on a circle; checkTangency then measures how well the segments fit it.
-  const std::string where = "Boundary Conditions/" + group + "/Tool Motion = Rotation";
-  const size_t n = m_curve.nodes.size();
-  if (n < 3)
-    throw InputError(where + ": the Rotation Centre is not given and " + std::to_string(n) +
-                     " wall node(s) define no circle; give Rotation Centre X and Y");
+namespace {
+
+/// Kåsa's algebraic fit: the circle x² + y² + D x + E y + F = 0 that minimizes the sum of its
+/// squared residuals at the points, in coordinates relative to their mean (so that the 3×3
+/// normal equations stay well conditioned for a short arc of a large roll); centre (−D/2, −E/2).
+/// Exact for points on a circle. False for points on a straight line (the normal equations
+/// singular, or a "circle" far larger than the points' extent: its sagitta below round-off).
+bool fitCircleCentre(const std::vector<std::array<double, 2>>& points, std::array<double, 2>& centre, double& radius) {
+  const size_t n = points.size();
   double mx = 0.0, my = 0.0;
-  for (GO node : m_curve.nodes) {
-    mx += mesh.coords[node][0] / n;
-    my += mesh.coords[node][1] / n;
+  for (const auto& p : points) {
+    mx += p[0] / n;
+    my += p[1] / n;
   }
   Teuchos::SerialDenseMatrix<int, double> A(3, 3), b(3, 1), sol(3, 1);
   double extent = 0.0;
-  for (GO node : m_curve.nodes) {
-    const double x = mesh.coords[node][0] - mx, y = mesh.coords[node][1] - my;
+  for (const auto& p : points) {
+    const double x = p[0] - mx, y = p[1] - my;
     const double row[3] = {x, y, 1.0}, rhs = -(x * x + y * y);
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) A(i, j) += row[i] * row[j];
@@ -232,18 +227,37 @@ void ContactWall::fitRotationCentre(const std::string& group, const Teuchos::Par
     }
     extent = std::max(extent, std::hypot(x, y));
   }
-  // A straight wall makes the normal equations singular.
   Teuchos::SerialDenseSolver<int, double> solver;
   solver.setMatrix(Teuchos::rcpFromRef(A));
   solver.setVectors(Teuchos::rcpFromRef(sol), Teuchos::rcpFromRef(b));
   const bool solved = solver.factor() == 0 && solver.solve() == 0;
-  const std::array<double, 2> centre{mx - 0.5 * sol(0, 0), my - 0.5 * sol(1, 0)};
-  const double radius = std::hypot(centre[0] - mx, centre[1] - my);
-  // A straight wall: no solution, or a "circle" far larger than the wall (its sagitta below round-off).
-  if (!solved || !std::isfinite(centre[0]) || !std::isfinite(centre[1]) || !(radius < 1e6 * extent))
+  centre = {mx - 0.5 * sol(0, 0), my - 0.5 * sol(1, 0)};
+  radius = std::hypot(centre[0] - mx, centre[1] - my);
+  return solved && std::isfinite(centre[0]) && std::isfinite(centre[1]) && radius < 1e6 * extent;
+}
+
+}  // namespace
+
+void ContactWall::fitRotationCentre(const std::string& group, const Teuchos::ParameterList& given,
+                                    const Mesh& mesh) {
+  if (m_settings.motion.kind != ToolMotion::Kind::Rotation || given.isParameter("Rotation Centre X") ||
+      given.isParameter("Rotation Centre Y"))
+    return;
+  // checkTangency then measures how well the segments fit the circle.
+  const std::string where = "Boundary Conditions/" + group + "/Tool Motion = Rotation";
+  const size_t n = m_curve.nodes.size();
+  if (n < 3)
+    throw InputError(where + ": the Rotation Centre is not given and " + std::to_string(n) +
+                     " wall node(s) define no circle; give Rotation Centre X and Y");
+  std::vector<std::array<double, 2>> points;
+  for (GO node : m_curve.nodes) points.push_back(mesh.coords[node]);
+  std::array<double, 2> centre;
+  double radius = 0.0;
+  if (!fitCircleCentre(points, centre, radius))
     throw InputError(where + ": the Rotation Centre is not given and the wall's nodes lie on a straight line, "
                      "not on a circle; give Rotation Centre X and Y");
   m_settings.motion.centre = centre;
+  m_centreFitted = true;
   log() << "contact: wall '" << group << "' turns about the centre of its nodes' circle (" << centre[0] << ", "
         << centre[1] << "), radius " << radius << "\n";
 }
@@ -305,6 +319,10 @@ void ContactWall::refreshGeometry(const Mesh& mesh) {
   m_wallNormalSpeed.assign(m_curve.nodes.size(), 0.0);
   m_wallTangentialSpeed.assign(m_curve.nodes.size(), 0.0);
   if (!m_settings.motion.moving()) return;
+  // A fitted centre follows the wall's nodes (a shape parameter moving the roll: GeoParameterMotion).
+  std::array<double, 2> centre;
+  double radius = 0.0;
+  if (m_centreFitted && fitCircleCentre(m_coords, centre, radius)) m_settings.motion.centre = centre;
   for (size_t k = 0; k < m_curve.nodes.size(); ++k) {
     const auto v = m_settings.motion.velocityAt(m_coords[k]);
     const auto& n = m_curve.normals[k];

@@ -51,7 +51,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   const ParameterList& own = m_problem->parameters();
   m_sensitivity = std::make_unique<Sensitivity>(own.isSublist("Sensitivity") ? &own.sublist("Sensitivity") : nullptr,
                                                 m_problem->contactWalls(), m_problem->responses(),
-                                                m_problem->physics().material.law);
+                                                m_problem->physics().material.law, givenGeoParameters(own));
   m_setupSeconds = secondsSince(start);
 }
 
@@ -121,8 +121,9 @@ void Simulation::runSensitivity() {
   const auto start = std::chrono::steady_clock::now();
   Problem& p = *m_problem;
   const std::optional<RigidInflowLinearization> inflow = p.rigidInflowLinearization();
+  const GeoPartialsSource geo = geoPartialsOf(p);
   m_sensitivity->compute(p.model(), p.solution(), p.responses(), p.mesh(), p.dofMap(), p.contactWalls(),
-                         inflow ? &*inflow : nullptr);
+                         inflow ? &*inflow : nullptr, &geo);
   if (!p.freeSurfaces().empty() && m_sensitivity->totalShapeRequested() && m_sensitivity->finite()) {
     m_shapeDerivative = totalShapeDerivative(p, *m_sensitivity);
     if (m_shapeDerivative.computed) m_sensitivity->setTotalShapeDerivatives(m_shapeDerivative.responses);

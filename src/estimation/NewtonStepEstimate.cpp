@@ -166,8 +166,9 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
     list.set("Jacobian", "Converged");
     list.set("Finite Difference Check", false);
     sensitivity = std::make_unique<Sensitivity>(&list, fine.contactWalls(), fine.responses(),
-                                                fine.physics().material.law);
-    sensitivity->compute(model, x, fine.responses(), fine.mesh(), fine.dofMap(), fine.contactWalls());
+                                                fine.physics().material.law, givenGeoParameters(fine.parameters()));
+    const GeoPartialsSource geo = geoPartialsOf(fine);
+    sensitivity->compute(model, x, fine.responses(), fine.mesh(), fine.dofMap(), fine.contactWalls(), nullptr, &geo);
     lap("sensitivities");
   }
   extrapolate(coarseRun, refined, sensitivity && sensitivity->computed() ? &sensitivity->responseDerivatives() : nullptr,

@@ -139,6 +139,32 @@ std::vector<double> UpdateLinearization::updateAlong(const Vector& d) const {
   return dU;
 }
 
+std::vector<double> UpdateLinearization::residualAlongMotion(const std::vector<std::array<double, 2>>& V) const {
+  const Vector& q = *m_state;
+  const std::vector<std::array<double, 2>> base = m_at.mesh.coords;
+  double largest = 0.0;
+  for (const auto& v : V) largest = std::max(largest, std::hypot(v[0], v[1]));
+  std::vector<double> dr(m_unknowns.size(), 0.0);
+  if (!(largest > 0.0)) return dr;
+  const double eps = 1e-6 * m_at.surfaces.lengthScale() / largest;
+  // The update's residual along each unknown: where it puts the node less where the node is.
+  auto residualAt = [&](double amount) {
+    std::vector<std::array<double, 2>> moved = base;
+    for (size_t n = 0; n < moved.size(); ++n) moved[n] = {base[n][0] + amount * V[n][0], base[n][1] + amount * V[n][1]};
+    m_at.moveNodes(moved);
+    std::vector<double> r = updateAt(q);
+    for (size_t j = 0; j < m_unknowns.size(); ++j) {
+      const auto& p = m_at.mesh.coords[m_step.moves[m_unknowns[j].move].node];
+      r[j] -= p[0] * m_unknowns[j].direction[0] + p[1] * m_unknowns[j].direction[1];
+    }
+    return r;
+  };
+  const std::vector<double> plus = residualAt(eps), minus = residualAt(-eps);
+  m_at.moveNodes(base);
+  for (size_t j = 0; j < dr.size(); ++j) dr[j] = (plus[j] - minus[j]) / (2 * eps);
+  return dr;
+}
+
 bool UpdateLinearization::solve(const Teuchos::SerialDenseMatrix<int, double>& B,
                                 Teuchos::SerialDenseMatrix<int, double>& X) const {
   const int nb = size();

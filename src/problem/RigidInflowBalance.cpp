@@ -351,6 +351,17 @@ std::optional<RigidInflowLinearization> Problem::rigidInflowLinearization() {
   return lin;
 }
 
+double Problem::rigidInflowForce(const Vector& x) {
+  const RigidInflow& inflow = m_bcs->rigidInflow();
+  const BoundaryCurve curve = buildBoundaryCurve(m_mesh, m_mesh.boundary(inflow.group));
+  Vector r(m_dofMap->ownedMap());
+  m_assembler->residual(x, r, false);
+  const double local = alongGroup(r, curve, inflow.direction, *m_dofMap);
+  double global = 0.0;
+  Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return global;
+}
+
 double Problem::rigidInflowForceTangent(const Vector& x, const Vector& dq, const SensitivityParameter* h) {
   // dF = d · Σ_{i ∈ group} dR_i, dR the unconstrained residual's tangent along (dq, h).
   const RigidInflow& inflow = m_bcs->rigidInflow();

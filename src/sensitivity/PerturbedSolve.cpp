@@ -3,6 +3,7 @@
 #include "flowform/contact/WallStates.hpp"
 #include "flowform/freesurface/FreeSurfaceLoop.hpp"
 #include "flowform/problem/Problem.hpp"
+#include "flowform/sensitivity/GeoParameterMotion.hpp"
 
 namespace flowform {
 
@@ -13,6 +14,15 @@ PerturbedRun solvePerturbed(Problem& problem, const SensitivityParameter& h, dou
   for (const ContactWall& wall : walls) saved.push_back(wall.state());
   FlowPhysics physics = problem.physics();
   shiftParameter(h, delta, physics, walls);
+  // A Geo Parameter: the .geo meshed again at h + δ, the free surfaces' displacements carried over.
+  const std::vector<std::array<double, 2>> baseShape = problem.mesh().coords;
+  if (h.isGeo()) {
+    std::vector<std::array<double, 2>> shape = meshedAt(problem, h.geoName, h.geoValue + delta);
+    const Mesh made = problem.meshAsMade();
+    for (size_t n = 0; n < shape.size(); ++n)
+      for (int d = 0; d < 2; ++d) shape[n][d] += baseShape[n][d] - made.coords[n][d];
+    problem.moveNodes(shape);
+  }
   for (ContactWall& wall : walls) wall.resetChangeCounts();
   // Held scales (the default) keep the walls' μ_k and σ̄_k of the base run, the problem the
   // DDM differentiates; Recomputed takes them from the start state at h ± δ, as a solve does.
@@ -62,6 +72,7 @@ PerturbedRun solvePerturbed(Problem& problem, const SensitivityParameter& h, dou
     }
     problem.moveNodes(shape);
   }
+  if (h.isGeo()) problem.moveNodes(baseShape);
   if (inflow) problem.setRigidInflowSpeed(baseSpeed);
   for (size_t w = 0; w < walls.size(); ++w) walls[w].restore(saved[w]);
   problem.model().setPhysics(problem.physics());

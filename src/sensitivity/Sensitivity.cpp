@@ -64,18 +64,18 @@ Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
 }
 
 Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls,
-                         const Responses& responses, int materialLaw) {
+                         const Responses& responses, int materialLaw, const GeoParameterValues& geo) {
   if (!list) return;
   std::set<std::string> seen;
   for (const std::string& given : list->get<Teuchos::Array<std::string>>("Parameters")) {
     const std::string name = trim(given);
     if (name.empty()) continue;
     if (!seen.insert(name).second) throw InputError("Sensitivity/Parameters: '" + name + "' is given twice");
-    m_parameters.push_back(parseSensitivityParameter(name, walls, materialLaw));
+    m_parameters.push_back(parseSensitivityParameter(name, walls, materialLaw, geo));
     // The Tresca bound m σ̄_k/√3 uses σ̄_k held from the start of the solve (ContactWall::
     // setScales), so its dependence on the material parameters (and on q) is not in ∂R/∂h
     // or K_t: refuse rather than report a derivative that misses a full-size term.
-    if (!m_parameters.back().isFriction())
+    if (m_parameters.back().kind == ParameterKind::Material)
       for (const ContactWall& wall : walls)
         if (wall.usesShearFactor())
           throw InputError("Sensitivity/Parameters: '" + name + "' is not available while wall '" + wall.name() +
@@ -97,10 +97,22 @@ Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<C
 
 void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& responses, const Mesh& mesh,
                           const DofMap& dofMap, const std::vector<ContactWall>& walls,
-                          const RigidInflowLinearization* inflow) {
+                          const RigidInflowLinearization* inflow, const GeoPartialsSource* geo) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: sensitivity"));
   const int factorizations0 = model.linearSolver().numFactorizations();
   const int solves0 = model.linearSolver().numSolves();
+
+  // A Geo Parameter's ∂R/∂h (and ∂φ/∂h, ∂F/∂h) from the mesh moved along its motion, before the
+  // factors (a moved mesh drops them).
+  std::map<std::string, MeshPartials> meshPartials;
+  m_geoMotions.clear();
+  for (const SensitivityParameter& h : m_parameters) {
+    if (!h.isGeo()) continue;
+    if (!geo) throw std::logic_error("Sensitivity::compute: a Geo Parameter without the mesh's partials");
+    MeshPartials partials = (*geo)(h, x);
+    m_geoMotions[h.name] = std::move(partials.motion);
+    meshPartials[h.name] = std::move(partials);
+  }
 
   // The factors: of K_t at the converged q, or those NOX left (the previous iterate's).
   const auto point = model.jacobianPoint();
@@ -130,6 +142,11 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
   m_dqdh = Teuchos::rcp(new MultiVector(x.getMap(), numParameters));
   for (size_t j = 0; j < numParameters; ++j) {
     auto column = rhs.getVectorNonConst(j);
+    const auto partials = meshPartials.find(m_parameters[j].name);
+    if (partials != meshPartials.end()) {
+      column->update(-1.0, *partials->second.dRdh, 0.0);
+      continue;
+    }
     model.assembler().parameterDerivative(x, m_parameters[j], *column);
     column->scale(-1.0);
   }
@@ -151,7 +168,10 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
     log() << "sensitivity: rigid inflow: dF/dU = " << m_inflowForceSlope << "\n";
     for (size_t j = 0; j < numParameters; ++j) {
       auto column = m_dqdh->getVectorNonConst(j);
-      const double dUdh = -inflow->dForce(*column, &m_parameters[j]) / m_inflowForceSlope;
+      const auto partials = meshPartials.find(m_parameters[j].name);
+      const double dFdh = inflow->dForce(*column, &m_parameters[j]) +
+                          (partials != meshPartials.end() ? partials->second.dInflowForce : 0.0);
+      const double dUdh = -dFdh / m_inflowForceSlope;
       column->update(dUdh, gU, 1.0);
       m_inflowSpeedDerivatives[m_parameters[j].name] = dUdh;
       log() << "sensitivity: rigid inflow: dU/d" << m_parameters[j].name << " = " << dUdh << "\n";
@@ -169,9 +189,11 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
     if (!m_finite) continue;
     const auto d = responses.derivatives(x, *m_dqdh->getVector(j), m_parameters[j], mesh, dofMap, model.assembler(),
                                          walls);
+    const auto partials = meshPartials.find(m_parameters[j].name);
     for (const auto& [name, value] : d) {
-      m_responseDerivatives[name][m_parameters[j].name] = value;
-      log() << "sensitivity:   d" << name << "/dh = " << value << "\n";
+      m_responseDerivatives[name][m_parameters[j].name] =
+          value + (partials != meshPartials.end() ? partials->second.dPhidh.at(name) : 0.0);
+      log() << "sensitivity:   d" << name << "/dh = " << m_responseDerivatives[name][m_parameters[j].name] << "\n";
     }
   }
   if (!m_finite) {

@@ -45,9 +45,14 @@ ShapeDerivative totalShapeDerivative(Problem& problem, const Sensitivity& sensit
   const auto& parameters = sensitivity.parameters();
   const int np = static_cast<int>(parameters.size());
   Teuchos::SerialDenseMatrix<int, double> rhs(nb, np), db;
+  // A Geo Parameter also moves the mesh under the held surfaces (X_h = V): + U_X V − V along the unknowns.
   for (int p = 0; p < np; ++p) {
     const std::vector<double> dU = lin.updateAlong(*sensitivity.solutionDerivatives().getVector(p));
     for (int i = 0; i < nb; ++i) rhs(i, p) = dU[i];
+    const auto motion = sensitivity.geoMotions().find(parameters[p].name);
+    if (motion == sensitivity.geoMotions().end()) continue;
+    const std::vector<double> dr = lin.residualAlongMotion(motion->second);
+    for (int i = 0; i < nb; ++i) rhs(i, p) += dr[i];
   }
   if (!lin.solve(rhs, db)) {
     out.failure = "I − G is singular: the surface's fixed point is not isolated";

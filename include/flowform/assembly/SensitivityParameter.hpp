@@ -8,11 +8,15 @@
 //   "Shear Factor", "Shear Factor:<wall group>"   m, likewise
 //   a material law's parameter, e.g. the power law's "Yield Stress" σ0, "Rate Constant" γ,
 //   "Rate Exponent" n, or Sellars–Tegart's "Activation Energy" Q, "Temperature" T, ...
+//   "Geo Parameter:<name>"              a shape parameter: a Mesh/Geo Parameters entry of the
+//                                       case's .geo (a die angle, a roll radius); it moves the
+//                                       mesh, not a coefficient (sensitivity/GeoParameterMotion)
 //
 // The AD seeding with such a parameter: EvaluationTypes.hpp.
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "flowform/physics/Material.hpp"
@@ -22,8 +26,8 @@ namespace flowform {
 
 struct FlowPhysics;
 
-/// The friction parameters, or one of the material law's (which: `material`).
-enum class ParameterKind { FrictionCoefficient, ShearFactor, Material };
+/// The friction parameters, one of the material law's (which: `material`), or a .geo constant.
+enum class ParameterKind { FrictionCoefficient, ShearFactor, Material, GeoParameter };
 
 struct SensitivityParameter {
   std::string name;    ///< as the case gives it, e.g. "Friction Coefficient:<wall group>"
@@ -32,6 +36,10 @@ struct SensitivityParameter {
   int wall = -1;       ///< friction parameters: the wall's index, −1 for every wall
   int material = -1;   ///< material parameters: the index in MaterialParameters::values
   bool relativeStep = false;  ///< the finite-difference step is relative (the law says)
+  std::string geoName;        ///< a Geo Parameter: its name in Mesh/Geo Parameters
+  double geoValue = 0.0;      ///< a Geo Parameter: its value in the case
+
+  bool isGeo() const { return kind == ParameterKind::GeoParameter; }
 
   bool isFriction() const { return kind == ParameterKind::FrictionCoefficient || kind == ParameterKind::ShearFactor; }
   /// Whether this parameter enters wall `w`'s law.
@@ -42,16 +50,21 @@ struct SensitivityParameter {
   /// The finite-difference step for a requested step s: absolute (δ = s) for the
   /// dimensionless friction parameters ν and m, which may be 0 (the paper's Δν = 2·10⁻⁴);
   /// for a material parameter as its law declares: relative (δ = s |h|; s if h = 0) for
-  /// those that carry units and scales (all of today's laws' parameters), else absolute.
+  /// those that carry units and scales (all of today's laws' parameters), else absolute;
+  /// relative for a Geo Parameter (a length or an angle in the .geo's units).
   double finiteDifferenceStep(double s, const FlowPhysics& physics) const;
 };
 
+/// The Mesh/Geo Parameters a case gives (name, value): what "Geo Parameter:<name>" may name.
+using GeoParameterValues = std::vector<std::pair<std::string, double>>;
+
 /// Parses a name of Sensitivity/Parameters for a case with material law `law` (an index of
-/// materialLaws()). InputError naming the allowed names (those of the case's walls and of
-/// its law included) for an unknown name or another law's parameter, for a friction
-/// parameter when the case has no contact wall, or when no wall's law uses it.
+/// materialLaws()) and Geo Parameters `geo`. InputError naming the allowed names (those of the
+/// case's walls, of its law and its Geo Parameters included) for an unknown name or another
+/// law's parameter, for a friction parameter when the case has no contact wall, when no
+/// wall's law uses it, or for a Geo Parameter the case does not give.
 SensitivityParameter parseSensitivityParameter(const std::string& name, const std::vector<ContactWall>& walls,
-                                               int law);
+                                               int law, const GeoParameterValues& geo = {});
 
 /// The value of h in the case (for a friction parameter of every wall: the first using it).
 double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics, const std::vector<ContactWall>& walls);

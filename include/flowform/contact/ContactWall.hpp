@@ -355,6 +355,7 @@ class ContactWall {
 
   BoundaryCurve m_curve;
   ContactWallSettings m_settings;
+  bool m_centreFitted = false;  ///< the Rotation Centre is fitted to the nodes (and refitted as they move)
   Geometry m_geometry;
   static constexpr char kFree = 0, kActive = 1, kSelfDeciding = 2, kComplementary = 3;
   std::vector<char> m_active;     ///< kFree, kActive, kSelfDeciding or kComplementary per node

@@ -57,6 +57,10 @@ class UpdateLinearization {
   double spectralRadius() const { return m_spectralRadius; }
   /// U_q d (per unknown) by central differences along d (a dof vector on the owned map).
   std::vector<double> updateAlong(const Vector& d) const;
+  /// The change of the update's residual (where it puts each unknown's node, less where the node
+  /// is) when the whole mesh moves along V (a shape parameter's motion, GeoParameterMotion) at the
+  /// state's q: central differences at X ± εV; the mesh is put back.
+  std::vector<double> residualAlongMotion(const std::vector<std::array<double, 2>>& V) const;
   /// dφ/db_j = ∂φ/∂b_j + φ_q Y_j of response `name` (with `responses` only).
   double responseShape(int j, const std::string& name) const { return m_phiB[j].at(name) + m_phiQ[j].at(name); }
   /// X = (I − G)⁻¹ B (columns); false when I − G is singular.

@@ -34,6 +34,7 @@
 #include "flowform/responses/Responses.hpp"
 #include "flowform/assembly/SensitivityParameter.hpp"
 #include "flowform/contact/ContactWall.hpp"
+#include "flowform/sensitivity/GeoParameterMotion.hpp"
 
 namespace flowform {
 
@@ -48,8 +49,9 @@ class Sensitivity {
   /// (then nothing is requested and compute() is never called). InputError for a bad
   /// parameter name, a repeated one, or a response whose name a check entry uses.
   /// `materialLaw` (an index of materialLaws()) gives the material's sensitivity parameters.
+  /// `geo`: the case's Mesh/Geo Parameters, which "Geo Parameter:<name>" may name.
   Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls, const Responses& responses,
-              int materialLaw);
+              int materialLaw, const GeoParameterValues& geo = {});
 
   bool requested() const { return !m_parameters.empty(); }
   const std::vector<SensitivityParameter>& parameters() const { return m_parameters; }
@@ -69,8 +71,13 @@ class Sensitivity {
   /// dq/dh for every parameter at the converged x, then dφ/dh for every response. With `inflow`
   /// (a Rigid Inflow's speed U, an unknown of the flow: Problem::rigidInflowLinearization), dq/dh
   /// is the bordered system's, (dq/dh)_U + (dU/dh) g with K g = −∂f/∂U, dU/dh = −(dF/dh)_U / (dF/dU).
+  /// A Geo Parameter's ∂R/∂h, ∂φ/∂h (and ∂F/∂h of the inflow's balance) come from `geo` (the mesh
+  /// moved along the parameter's motion: GeoParameterMotion), needed when one is asked for.
   void compute(FlowModel& model, const Vector& x, const Responses& responses, const Mesh& mesh, const DofMap& dofMap,
-               const std::vector<ContactWall>& walls, const RigidInflowLinearization* inflow = nullptr);
+               const std::vector<ContactWall>& walls, const RigidInflowLinearization* inflow = nullptr,
+               const GeoPartialsSource* geo = nullptr);
+  /// The mesh velocity V = dX/dh of each Geo Parameter (by name), after compute().
+  const std::map<std::string, std::vector<std::array<double, 2>>>& geoMotions() const { return m_geoMotions; }
 
   bool computed() const { return !m_dqdh.is_null(); }
   /// Column j is dq/dh_j (owned map). Only after compute().
@@ -107,6 +114,7 @@ class Sensitivity {
   bool m_inflow = false;
   double m_inflowForceSlope = 0.0;
   std::map<std::string, double> m_inflowSpeedDerivatives;
+  std::map<std::string, std::vector<std::array<double, 2>>> m_geoMotions;
 };
 
 }  // namespace flowform

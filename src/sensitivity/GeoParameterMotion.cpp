@@ -1,0 +1,132 @@
+#include "flowform/sensitivity/GeoParameterMotion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/freesurface/MeshMotion.hpp"
+#include "flowform/mesh/BoundaryCurve.hpp"
+#include "flowform/mesh/MeshReader.hpp"
+#include "flowform/problem/Problem.hpp"
+
+namespace flowform {
+
+GeoParameterValues givenGeoParameters(const Teuchos::ParameterList& caseParams) {
+  GeoParameterValues values;
+  if (!caseParams.isSublist("Mesh") || !caseParams.sublist("Mesh").isSublist("Geo Parameters")) return values;
+  const Teuchos::ParameterList& geo = caseParams.sublist("Mesh").sublist("Geo Parameters");
+  for (auto it = geo.begin(); it != geo.end(); ++it) {
+    const Teuchos::ParameterEntry& entry = geo.entry(it);
+    if (entry.isType<double>()) values.emplace_back(geo.name(it), Teuchos::getValue<double>(entry));
+    else if (entry.isType<int>()) values.emplace_back(geo.name(it), Teuchos::getValue<int>(entry));
+  }
+  return values;
+}
+
+std::vector<std::array<double, 2>> meshedAt(const Problem& problem, const std::string& name, double value) {
+  Teuchos::ParameterList meshList = problem.parameters().sublist("Mesh");
+  meshList.sublist("Geo Parameters").set(name, value);
+  const SizeField& sizes = problem.sizeField();
+  const Mesh other = readMesh(meshList, problem.baseDirectory(), *problem.comm(), sizes.empty() ? nullptr : &sizes);
+  const Mesh made = problem.meshAsMade();
+  const std::string where = "Sensitivity/Parameters: 'Geo Parameter:" + name + "': meshed at " + name + " = " +
+                            std::to_string(value) + ", ";
+  // Boundary nodes: the k-th node along each group in the other mesh is the k-th here.
+  std::vector<std::array<double, 2>> displacement(made.numNodes(), {0.0, 0.0});
+  std::vector<char> prescribed(made.numNodes(), 0);
+  for (const BoundaryGroup& group : made.boundaries) {
+    if (!other.hasBoundary(group.name))
+      throw InputError(where + "the mesh has no group '" + group.name + "'");
+    const BoundaryCurve here = buildBoundaryCurve(made, group);
+    const BoundaryCurve there = buildBoundaryCurve(other, other.boundary(group.name));
+    if (here.closed || there.closed)
+      throw InputError(where + "group '" + group.name + "' is a closed curve, whose nodes have no first one to " +
+                       "match; a shape parameter needs open boundary groups");
+    if (here.nodes.size() != there.nodes.size())
+      throw InputError(where + "group '" + group.name + "' has " + std::to_string(there.nodes.size()) +
+                       " nodes instead of " + std::to_string(here.nodes.size()) +
+                       ": its nodes cannot be followed; a smaller change (or sizes that do not depend on it) would");
+    for (size_t k = 0; k < here.nodes.size(); ++k) {
+      const GO n = here.nodes[k];
+      const auto& to = other.coords[there.nodes[k]];
+      displacement[n] = {to[0] - made.coords[n][0], to[1] - made.coords[n][1]};
+      prescribed[n] = 1;
+    }
+  }
+  // The interior follows by the harmonic extension (freesurface/MeshMotion).
+  return extendBoundaryDisplacement(made, displacement, prescribed);
+}
+
+std::vector<std::array<double, 2>> geoParameterMotion(const Problem& problem, const SensitivityParameter& h) {
+  const double delta = kGeoMotionStep * std::max(std::abs(h.geoValue), 1e-12);
+  const auto plus = meshedAt(problem, h.geoName, h.geoValue + delta);
+  const auto minus = meshedAt(problem, h.geoName, h.geoValue - delta);
+  std::vector<std::array<double, 2>> V(plus.size());
+  double largest = 0.0;
+  for (size_t n = 0; n < V.size(); ++n) {
+    V[n] = {(plus[n][0] - minus[n][0]) / (2 * delta), (plus[n][1] - minus[n][1]) / (2 * delta)};
+    largest = std::max(largest, std::hypot(V[n][0], V[n][1]));
+  }
+  log() << "sensitivity: " << h.name << ": the mesh moves by up to " << largest << " per unit of " << h.geoName
+        << " (meshed at " << h.geoName << " = " << h.geoValue << " ± " << delta << ")\n";
+  return V;
+}
+
+std::vector<std::array<double, 2>> movedAlong(const Problem& problem, const std::vector<std::array<double, 2>>& V,
+                                              double amount) {
+  std::vector<std::array<double, 2>> coords = problem.mesh().coords;
+  for (size_t n = 0; n < coords.size(); ++n) {
+    coords[n][0] += amount * V[n][0];
+    coords[n][1] += amount * V[n][1];
+  }
+  return coords;
+}
+
+MeshPartials meshPartials(Problem& problem, const Vector& state, const std::vector<std::array<double, 2>>& V) {
+  // A copy: moving the nodes re-imposes the problem's own solution's prescribed values, which may
+  // be `state` itself, and the differences need q held.
+  const Vector x(state, Teuchos::Copy);
+  const std::vector<std::array<double, 2>> base = problem.mesh().coords;
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300}, largest = 0.0;
+  for (size_t n = 0; n < base.size(); ++n) {
+    for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], base[n][d]), hi[d] = std::max(hi[d], base[n][d]);
+    largest = std::max(largest, std::hypot(V[n][0], V[n][1]));
+  }
+  MeshPartials out;
+  out.dRdh = Teuchos::rcp(new Vector(x.getMap()));
+  if (!(largest > 0.0)) return out;  // the parameter moves no node
+  // The residual has kinks in the node positions: a wall node near its stick/slip switch (the
+  // tangential penalty's stick window is |u_t| < f̂/α_t, narrow) changes branch under a small move.
+  // Measured on xml/rolling.xml, dU/dR by the bordered DDM with the largest move εV at 10⁻⁶, 10⁻⁷,
+  // 10⁻⁸, 10⁻⁹, 10⁻¹⁰ of the mesh's size: 1.34, 0.514, 0.7853, 0.7853, 0.7853 (re-meshed finite
+  // differences: 0.785); the moves stay on the converged branch from 10⁻⁸ down.
+  const double eps = kMeshPartialMove * std::hypot(hi[0] - lo[0], hi[1] - lo[1]) / largest;
+  const bool inflow = !problem.boundaryConditions().rigidInflow().group.empty();
+  Vector plus(x.getMap()), minus(x.getMap());
+  problem.moveNodes(movedAlong(problem, V, eps));
+  problem.assembler().residual(x, plus);
+  const auto phiPlus = problem.evaluateResponses(x);
+  const double forcePlus = inflow ? problem.rigidInflowForce(x) : 0.0;
+  problem.moveNodes(base);
+  problem.moveNodes(movedAlong(problem, V, -eps));
+  problem.assembler().residual(x, minus);
+  const auto phiMinus = problem.evaluateResponses(x);
+  const double forceMinus = inflow ? problem.rigidInflowForce(x) : 0.0;
+  problem.moveNodes(base);
+  out.dRdh->update(1.0 / (2 * eps), plus, -1.0 / (2 * eps), minus, 0.0);
+  for (const auto& [name, value] : phiPlus) out.dPhidh[name] = (value - phiMinus.at(name)) / (2 * eps);
+  out.dInflowForce = (forcePlus - forceMinus) / (2 * eps);
+  return out;
+}
+
+GeoPartialsSource geoPartialsOf(Problem& problem) {
+  return [&problem](const SensitivityParameter& h, const Vector& x) {
+    std::vector<std::array<double, 2>> V = geoParameterMotion(problem, h);
+    MeshPartials partials = meshPartials(problem, x, V);
+    partials.motion = std::move(V);
+    return partials;
+  };
+}
+
+}  // namespace flowform
