@@ -96,11 +96,18 @@ MeshPartials meshPartials(Problem& problem, const Vector& state, const std::vect
   MeshPartials out;
   out.dRdh = Teuchos::rcp(new Vector(x.getMap()));
   if (!(largest > 0.0)) return out;  // the parameter moves no node
-  // The residual has kinks in the node positions: a wall node near its stick/slip switch (the
-  // tangential penalty's stick window is |u_t| < f̂/α_t, narrow) changes branch under a small move.
-  // Measured on xml/rolling.xml, dU/dR by the bordered DDM with the largest move εV at 10⁻⁶, 10⁻⁷,
-  // 10⁻⁸, 10⁻⁹, 10⁻¹⁰ of the mesh's size: 1.34, 0.514, 0.7853, 0.7853, 0.7853 (re-meshed finite
-  // differences: 0.785); the moves stay on the converged branch from 10⁻⁸ down.
+  // The move (kMeshPartialMove). Central differences in the node positions meet kinks: a wall
+  // node near its stick/slip switch (the tangential penalty's stick window |u_t| < f̂/α_t is
+  // narrow) changes branch under a move; the Neutral Angle's interpolated zero of the slip jumps a
+  // segment where the stick zone's slips are ~0. A smaller move loses digits to round-off where a
+  // derivative is small against the residual's terms. Measured with the largest move at 10⁻⁶ …
+  // 10⁻¹⁰ of the mesh's size: xml/rolling.xml's dU/dR by the bordered DDM 1.34, 0.514, 0.7853,
+  // 0.7853, 0.7853 (re-meshed finite differences 0.785), its dθ_n/dR −9216 at 10⁻⁸ and −0.1369 at
+  // 10⁻⁹ (finite differences −0.1370); xml/extrusion.xml's dF/dLe 0.0135044 from 10⁻⁶ to 10⁻⁸
+  // (finite differences 0.0135043), 0.0134985 at 10⁻⁹ (4.4e-4 off: 1.6e-6 of F per unit Le).
+  // Mixing moves (the residual at 10⁻⁸, the responses at 10⁻⁹, or each at the largest move that
+  // agrees with a smaller one) made the rolling forces' derivatives 2–7 % wrong: the complementarity
+  // walls decide statuses as the residual is assembled, so the differences must see one sequence.
   const double eps = kMeshPartialMove * std::hypot(hi[0] - lo[0], hi[1] - lo[1]) / largest;
   const bool inflow = !problem.boundaryConditions().rigidInflow().group.empty();
   Vector plus(x.getMap()), minus(x.getMap());

@@ -65,3 +65,8 @@ flowform_exit_test(bad_input_normal_penalty_zero CASE contact_small.xml
 flowform_exit_test(bad_input_norton_exponent_zero CASE contact_small.xml
   SET "Boundary Conditions/top/Friction Law=Norton" "Boundary Conditions/top/Norton Exponent=0"
   CONTAINS "Boundary Conditions/top" "Norton Exponent" "> 0")
+
+# --- a shape parameter the case does not give in Mesh/Geo Parameters ------------------------------
+flowform_exit_test(bad_input_sensitivity_unknown_geo_parameter CASE channel_small.xml
+  SET "Sensitivity/Parameters={Geo Parameter:Q}"
+  CONTAINS "Geo Parameter:Q" "Mesh/Geo Parameters" "allowed")

@@ -5,7 +5,7 @@
 # (the adaptive penalty scales depend on the solution, which the DDM holds fixed). Each test is one subcommand
 # of regression/sensitivity_checks.py (tolerances justified there and in docs/sensitivity.md).
 set(FLOWFORM_PYTHON /usr/bin/python3)  # Debian's, with h5py
-foreach(sub channel extrusion external one-sided no-work)
+foreach(sub channel extrusion external one-sided no-work shape)
   add_test(NAME sensitivity_${sub}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/sensitivity_checks.py ${sub}
                    $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/sensitivity/${sub})
