@@ -106,8 +106,8 @@ MeshPartials meshPartials(Problem& problem, const Vector& state, const std::vect
   // 10⁻⁹ (finite differences −0.1370); xml/extrusion.xml's dF/dLe 0.0135044 from 10⁻⁶ to 10⁻⁸
   // (finite differences 0.0135043), 0.0134985 at 10⁻⁹ (4.4e-4 off: 1.6e-6 of F per unit Le).
   // Mixing moves (the residual at 10⁻⁸, the responses at 10⁻⁹, or each at the largest move that
-  // agrees with a smaller one) made the rolling forces' derivatives 2–7 % wrong: the complementarity
-  // walls decide statuses as the residual is assembled, so the differences must see one sequence.
+  // agrees with a smaller one) made the rolling forces' derivatives 2–7 % wrong, for a reason not
+  // traced (evaluations at several moves in sequence do not reproduce one move's alone).
   const double eps = kMeshPartialMove * std::hypot(hi[0] - lo[0], hi[1] - lo[1]) / largest;
   const bool inflow = !problem.boundaryConditions().rigidInflow().group.empty();
   Vector plus(x.getMap()), minus(x.getMap());
