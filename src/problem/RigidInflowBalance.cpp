@@ -108,24 +108,9 @@ RigidInflowReport Problem::balanceRigidInflow(NonlinearSolver& solver, Vector& x
   RigidInflowReport rep;
   rep.group = inflow.group;
   rep.startSpeed = rep.speed = inflow.speed;
-  const std::array<double, 2> d = inflow.direction;
-  const BoundaryCurve curve = buildBoundaryCurve(m_mesh, m_mesh.boundary(inflow.group));
 
-  // F(U) at the current state, and the force scale Σ|R_i| over the nodes with a prescribed component.
-  auto force = [&](double& scale) {
-    Vector r(m_dofMap->ownedMap());
-    m_assembler->residual(x, r, false);
-    double local[2] = {alongGroup(r, curve, d, *m_dofMap), 0.0};
-    auto view = r.getLocalViewHost(Tpetra::Access::ReadOnly);
-    const auto& constraints = m_bcs->constraints();
-    for (LO n = 0; n < m_dofMap->numOwnedNodes(); ++n)
-      if (constraints[n].kind != NodeConstraint::Kind::None)
-        local[1] += std::hypot(view(m_dofMap->dof(n, kUx), 0), view(m_dofMap->dof(n, kUy), 0));
-    double global[2];
-    Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, 2, local, global);
-    scale = global[1];
-    return global[0];
-  };
+  // F(U) at the current state, and the force scale.
+  auto force = [&](double& scale) { return rigidInflowForce(x, &scale); };
   // g and the balance's slope dF/dU = dF/dq g at the current converged state (the smooth part of the
   // slope: at fixed contact statuses), with the exact tangent factored there (one factorization per
   // trial; the last Newton iterate's factors may belong to another linearization or contact state:
@@ -351,15 +336,23 @@ std::optional<RigidInflowLinearization> Problem::rigidInflowLinearization() {
   return lin;
 }
 
-double Problem::rigidInflowForce(const Vector& x) {
+double Problem::rigidInflowForce(const Vector& x, double* scale) {
   const RigidInflow& inflow = m_bcs->rigidInflow();
   const BoundaryCurve curve = buildBoundaryCurve(m_mesh, m_mesh.boundary(inflow.group));
   Vector r(m_dofMap->ownedMap());
   m_assembler->residual(x, r, false);
-  const double local = alongGroup(r, curve, inflow.direction, *m_dofMap);
-  double global = 0.0;
-  Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
-  return global;
+  double local[2] = {alongGroup(r, curve, inflow.direction, *m_dofMap), 0.0};
+  if (scale) {  // Σ|R_i| over the nodes with a prescribed component
+    auto view = r.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto& constraints = m_bcs->constraints();
+    for (LO n = 0; n < m_dofMap->numOwnedNodes(); ++n)
+      if (constraints[n].kind != NodeConstraint::Kind::None)
+        local[1] += std::hypot(view(m_dofMap->dof(n, kUx), 0), view(m_dofMap->dof(n, kUy), 0));
+  }
+  double global[2];
+  Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, 2, local, global);
+  if (scale) *scale = global[1];
+  return global[0];
 }
 
 double Problem::rigidInflowForceTangent(const Vector& x, const Vector& dq, const SensitivityParameter* h) {

@@ -123,8 +123,9 @@ class Problem {
   /// −∂f/∂U at x: f(x; U) − f(x; U + 1), f being affine in U (the group's prescribed rows).
   Teuchos::RCP<Vector> rigidInflowSpeedLoad(const Vector& x);
   /// The force balance's F at x: d·Σ_{i∈group} R_i of the unconstrained residual (the group's
-  /// reaction along its direction with the traction load).
-  double rigidInflowForce(const Vector& x);
+  /// reaction along its direction with the traction load); with `scale`, also the force scale
+  /// Σ|R_i| over the nodes with a prescribed component (collective).
+  double rigidInflowForce(const Vector& x, double* scale = nullptr);
   /// The force balance's tangent at x along (dq, h): d·Σ_{i∈group} (∂R_i/∂q dq + ∂R_i/∂h), the
   /// unconstrained residual's rows of the Rigid Inflow group (h null: none).
   double rigidInflowForceTangent(const Vector& x, const Vector& dq, const SensitivityParameter* h);
