@@ -59,7 +59,8 @@ std::vector<std::array<double, 2>> meshedAt(const Problem& problem, const std::s
 }
 
 std::vector<std::array<double, 2>> geoParameterMotion(const Problem& problem, const SensitivityParameter& h) {
-  const double delta = kGeoMotionStep * std::max(std::abs(h.geoValue), 1e-12);
+  // Relative, as the finite-difference check's step; absolute for a parameter at 0 (a rake angle).
+  const double delta = h.geoValue != 0.0 ? kGeoMotionStep * std::abs(h.geoValue) : kGeoMotionStep;
   const auto plus = meshedAt(problem, h.geoName, h.geoValue + delta);
   const auto minus = meshedAt(problem, h.geoName, h.geoValue - delta);
   std::vector<std::array<double, 2>> V(plus.size());
