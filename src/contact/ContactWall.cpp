@@ -230,6 +230,7 @@ bool fitCircleCentre(const std::vector<std::array<double, 2>>& points, std::arra
   Teuchos::SerialDenseSolver<int, double> solver;
   solver.setMatrix(Teuchos::rcpFromRef(A));
   solver.setVectors(Teuchos::rcpFromRef(sol), Teuchos::rcpFromRef(b));
+  solver.factorWithEquilibration(true);  // x, y ~ the arc's extent, 1: rows of very different sizes
   const bool solved = solver.factor() == 0 && solver.solve() == 0;
   centre = {mx - 0.5 * sol(0, 0), my - 0.5 * sol(1, 0)};
   radius = std::hypot(centre[0] - mx, centre[1] - my);

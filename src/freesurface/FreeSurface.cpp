@@ -45,6 +45,19 @@ Point segmentVelocity(const Point& xa, const Point& xb, const Point& ua, const P
   return {wa * ua[0] + wb * ub[0], wa * ua[1] + wb * ub[1]};
 }
 
+/// The unit tangent at x of the circle about `centre` through x, pointing along `towards`.
+Point circleTangent(const Point& x, const Point& centre, const Point& towards) {
+  const Point r = minus(x, centre);
+  const double length = std::hypot(r[0], r[1]), sign = dot({-r[1], r[0]}, towards) >= 0.0 ? 1.0 : -1.0;
+  return {-sign * r[1] / length, sign * r[0] / length};
+}
+
+/// +1 where moving along `tangent` at x turns counter-clockwise about `centre`, −1 clockwise.
+double turnSign(const Point& x, const Point& centre, const Point& tangent) {
+  const Point r = minus(x, centre);
+  return r[0] * tangent[1] - r[1] * tangent[0] >= 0.0 ? 1.0 : -1.0;
+}
+
 /// |ū·n|/|ū| of segment a–b: the sine of the angle between the flow and the segment.
 double flowAngle(const Point& xa, const Point& xb, const Point& mean) {
   const Point d = minus(xb, xa);
@@ -101,7 +114,8 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
       if (!(s.along[k] > s.along[k - 1]))
         throw InputError(where + ": the surface turns back on its chord (node " + std::to_string(s.nodes[k]) +
                          "); the spine update needs a surface that advances along it");
-    // The straight group at the downstream end, dragged along.
+    // The straight group at the downstream end, dragged along (or a contact wall, along whose
+    // tool the end slides).
     const GO end = s.nodes.back();
     for (const BoundaryGroup& g : mesh.boundaries) {
       if (g.name == name) continue;
@@ -109,6 +123,24 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
       for (const auto& e : g.edges) has = has || e[0] == end || e[1] == end;
       if (!has) continue;
       const BoundaryCurve other = buildBoundaryCurve(mesh, g);
+      const auto wall = std::find_if(walls.begin(), walls.end(), [&](const ContactWall& w) { return w.name() == g.name; });
+      if (wall != walls.end() && !arcLength) {
+        if (wall->motion().kind != ToolMotion::Kind::Rotation && !other.isStraight(1e-8))
+          throw InputError(where + ": the surface lands on contact wall '" + g.name + "', whose tool must be straight "
+                           "or a circle turning about its Rotation Centre (a roll): the end node slides along it");
+        if (other.closed || (other.nodes.front() != end && other.nodes.back() != end))
+          throw InputError(where + ": the surface must land on an end of contact wall '" + g.name + "'");
+        s.endWall = static_cast<int>(wall - walls.begin());
+        // The wall's other nodes slide with the end by their arc-length fraction from its far end.
+        const bool endFirst = other.nodes.front() == end;
+        const double total = other.arcLength.back();
+        for (size_t k = 1; k + 1 < other.nodes.size(); ++k) {
+          const size_t i = endFirst ? k : other.nodes.size() - 1 - k;
+          s.dragged.push_back(other.nodes[i]);
+          s.dragFraction.push_back(endFirst ? 1.0 - other.arcLength[i] / total : other.arcLength[i] / total);
+        }
+        continue;
+      }
       if (!other.isStraight(1e-8))
         throw InputError(where + ": group '" + g.name + "' at the surface's downstream end must be straight");
       const auto& n = other.segmentNormals.front();
@@ -164,6 +196,16 @@ FreeSurfaces::FreeSurfaces(const Teuchos::ParameterList& bcList, const Mesh& mes
   if (m_lengthScale <= 0.0) m_lengthScale = 1.0;
 }
 
+std::array<double, 2> FreeSurfaceStep::Slide::displacement(double amount) const {
+  if (!circle) return {amount * tangent[0], amount * tangent[1]};
+  // x = c + Rot(θ)(at − c), θ = amount/r turned from at − c towards the tangent.
+  const Point r = minus(at, centre);
+  const double theta = turnSign(at, centre, tangent) * amount / std::hypot(r[0], r[1]);
+  const double c = std::cos(theta), sn = std::sin(theta);
+  const Point x{centre[0] + c * r[0] - sn * r[1], centre[1] + sn * r[0] + c * r[1]};
+  return minus(x, at);
+}
+
 void FreeSurfaceStep::relax(double omega) {
   std::vector<std::array<double, 2>> scaled(moves.size());
   for (size_t i = 0; i < moves.size(); ++i) scaled[i] = {omega * moves[i].residual[0], omega * moves[i].residual[1]};
@@ -176,6 +218,7 @@ void FreeSurfaceStep::setMoves(const std::vector<std::array<double, 2>>& perMove
     const Move& m = moves[i];
     std::array<double, 2> d = perMove[i];
     if (!m.arcLength && dot(d, m.normal) > m.room) d = {m.room * m.normal[0], m.room * m.normal[1]};  // not into the tool
+    if (m.slide.on) d = m.slide.displacement(dot(d, m.normal));  // along the tool, on it
     moved[i] = d;
     displacement[m.node] = d;
     prescribed[m.node] = 1;
@@ -188,6 +231,12 @@ void FreeSurfaceStep::setMoves(const std::vector<std::array<double, 2>>& perMove
     if (!isMove[d.node]) displacement[d.node] = {0.0, 0.0};
   for (const Drag& d : drags) {
     if (isMove[d.node]) continue;
+    if (d.slide.on) {  // its fraction of the attachment's slide, along the tool
+      const Move& end = moves[d.end];
+      displacement[d.node] = d.slide.displacement(d.fraction * dot(perMove[d.end], end.normal));
+      prescribed[d.node] = 1;
+      continue;
+    }
     displacement[d.node][0] += d.fraction * moved[d.end][0];
     displacement[d.node][1] += d.fraction * moved[d.end][1];
     prescribed[d.node] = 1;
@@ -245,6 +294,70 @@ bool FreeSurfaces::arcLengthStep(const Surface& s, const Mesh& mesh,
   return true;
 }
 
+bool FreeSurfaces::attachmentStep(const Surface& s, const Mesh& mesh, const std::vector<ContactWall>& walls,
+                                  const Point& before, const Point& flow, FreeSurfaceStep& out) const {
+  const ContactWall& wall = walls[s.endWall];
+  const GO end = s.nodes.back();
+  const Point x = mesh.coords[end];
+  // The tool at the end node: a circle about the roll's centre, or the wall's line; its tangent
+  // there points into the wall (the flow's direction along it).
+  const BoundaryCurve& curve = wall.curve();
+  const bool endFirst = curve.nodes.front() == end;
+  const Point next = mesh.coords[endFirst ? curve.nodes[1] : curve.nodes[curve.nodes.size() - 2]];
+  FreeSurfaceStep::Slide slide;
+  slide.on = true;
+  slide.at = x;
+  slide.circle = wall.motion().kind == ToolMotion::Kind::Rotation;
+  slide.centre = wall.motion().centre;
+  const Point chord = minus(next, x);
+  const double radius = std::hypot(x[0] - slide.centre[0], x[1] - slide.centre[1]);
+  const double chordLength = std::hypot(chord[0], chord[1]);
+  slide.tangent = slide.circle ? circleTangent(x, slide.centre, chord)
+                               : Point{chord[0] / chordLength, chord[1] / chordLength};
+  // Where the line before + λ·flow first meets the tool (λ > 0).
+  const double speed = std::hypot(flow[0], flow[1]);
+  const Point d{flow[0] / speed, flow[1] / speed};
+  double lambda = -1.0;
+  if (slide.circle) {
+    // |before + λ d − c|² = r²: λ² + 2 λ d·e + |e|² − r² = 0, e = before − c; the first root.
+    const Point e = minus(before, slide.centre);
+    const double half = dot(d, e), c = dot(e, e) - radius * radius, disc = half * half - c;
+    if (c > 0.0 && disc >= 0.0) lambda = -half - std::sqrt(disc);
+  } else {
+    const Point n{-slide.tangent[1], slide.tangent[0]};  // the line (y − x)·n = 0
+    const double towards = dot(d, n);
+    if (towards != 0.0) lambda = dot(minus(x, before), n) / towards;
+  }
+  if (!(lambda > 0.0)) {
+    out.failure = "free surface '" + s.name + "' does not meet contact wall '" + wall.name() +
+                  "' downstream of its last free node (" + std::to_string(before[0]) + ", " +
+                  std::to_string(before[1]) + "): the flow there runs along or away from the tool";
+    return false;
+  }
+  const Point meet{before[0] + lambda * d[0], before[1] + lambda * d[1]};
+  // The slide from x to meet along the tool (an arc length on a circle).
+  double amount = dot(minus(meet, x), slide.tangent);
+  if (slide.circle) {
+    const Point a = minus(x, slide.centre), b = minus(meet, slide.centre);
+    amount = turnSign(x, slide.centre, slide.tangent) * radius * std::atan2(a[0] * b[1] - a[1] * b[0], dot(a, b));
+  }
+  const Point& last = mesh.coords[s.nodes[s.nodes.size() - 2]];  // the last segment, as it is
+  out.noteFlowAngle(flowAngle(last, x, flow), last, x);
+  out.residual.push_back(amount);
+  out.noteMove(std::abs(amount), x);
+  const size_t move = out.moves.size();
+  out.moves.push_back({end, slide.tangent, {amount * slide.tangent[0], amount * slide.tangent[1]},
+                       std::numeric_limits<double>::infinity(), true, false, slide});
+  // The wall's other nodes (but its far end) slide by their fraction; each with its own tangent.
+  for (size_t k = 0; k < s.dragged.size(); ++k) {
+    FreeSurfaceStep::Slide own = slide;
+    own.at = mesh.coords[s.dragged[k]];
+    if (slide.circle) own.tangent = circleTangent(own.at, slide.centre, slide.tangent);
+    out.drags.push_back({s.dragged[k], s.dragFraction[k], move, own});
+  }
+  return true;
+}
+
 FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const std::vector<double>& u,
                                    const std::vector<ContactWall>& walls, Geometry geometry,
                                    double gapTolerance) const {
@@ -289,7 +402,7 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
         return out;
       }
       const double angle = flowAngle(mesh.coords[na], mesh.coords[nb], mean);  // at the current positions
-      bNew[k + 1] = bNew[k] + (s.along[k + 1] - s.along[k]) * um / uc;
+      bNew[k + 1] = bNew[k] + dot(minus(mesh.coords[nb], mesh.coords[na]), s.chord) * um / uc;
       if (!free[k + 1]) {  // the end of a separated run: reattached, or passing below the node
         if (bNew[k + 1] < s.tool[k + 1] - gapTolerance && !wall->held(s.wallIndex[k + 1])) {
           free[k + 1] = 1;
@@ -313,12 +426,23 @@ FreeSurfaceStep FreeSurfaces::step(const Mesh& mesh, const DofMap& dofMap, const
     }
     // The update's residual is bNew − b along m; relax() moves the nodes by ω times it.
     const size_t first = out.moves.size();
-    for (size_t k = 0; k < n; ++k) {
+    const size_t spines = s.endWall >= 0 ? n - 1 : n;  // an attachment point slides instead
+    for (size_t k = 0; k < spines; ++k) {
       const double r = bNew[k] - b[k];
       out.residual.push_back(r);
       out.noteMove(std::abs(r), mesh.coords[s.nodes[k]]);
       const double room = wall ? s.tool[k] - b[k] : std::numeric_limits<double>::infinity();
       out.moves.push_back({s.nodes[k], s.normal, {r * s.normal[0], r * s.normal[1]}, room, integrated[k] != 0, false});
+    }
+    if (s.endWall >= 0) {
+      // The node before it where the update puts it: moved along its spine from where it is (a
+      // refined run started from a coarse one's surface has it off its as-made abscissa).
+      const GO na = s.nodes[n - 2], nb = s.nodes[n - 1];
+      const double rb = bNew[n - 2] - b[n - 2];
+      const Point before{mesh.coords[na][0] + rb * s.normal[0], mesh.coords[na][1] + rb * s.normal[1]};
+      const Point flow = segmentVelocity(mesh.coords[na], mesh.coords[nb], velocity(na), velocity(nb), geometry);
+      if (!attachmentStep(s, mesh, walls, before, flow, out)) return out;
+      continue;
     }
     for (size_t k = 0; k < s.dragged.size(); ++k) out.drags.push_back({s.dragged[k], s.dragFraction[k], first + n - 1});
   }

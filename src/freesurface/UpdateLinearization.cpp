@@ -43,25 +43,39 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
     const auto& dir = m_unknowns[j].direction;
     d[m_step.moves[m_unknowns[j].move].node] = {amount * dir[0], amount * dir[1]};
     for (const FreeSurfaceStep::Drag& drag : m_step.drags)
-      if (drag.end == m_unknowns[j].move) d[drag.node] = {drag.fraction * amount * dir[0], drag.fraction * amount * dir[1]};
+      if (drag.end == m_unknowns[j].move) {  // a wall node slid by an attachment point: along its own tangent
+        const auto& along = drag.slide.on ? drag.slide.tangent : dir;
+        d[drag.node] = {drag.fraction * amount * along[0], drag.fraction * amount * along[1]};
+      }
     at.moveNodes(extension.positions(d));
   };
 
   // Pass 1, the positions: ∂R/∂b_j (with the interior following), ∂U/∂b_j, ∂φ/∂b_j.
-  const double eps = 1e-6 * at.surfaces.lengthScale();
+  // An unknown that slides a contact wall's nodes along their tool (an attachment point) moves
+  // them by 10⁻⁹ of the surface's length: at 10⁻⁶ a wall node crosses its stick window and the
+  // differences meet the friction's kink (as the mesh partials of a shape parameter do,
+  // kMeshPartialMove); other unknowns by 10⁻⁶.
+  std::vector<char> slidesWall(nb, 0);
+  for (const FreeSurfaceStep::Drag& drag : m_step.drags)
+    for (int j = 0; j < nb; ++j) slidesWall[j] = slidesWall[j] || (drag.slide.on && drag.end == m_unknowns[j].move);
   MultiVector rx(q.getMap(), nb);
   m_G.shape(nb, nb);
   m_phiB.assign(responses ? nb : 0, {});
   m_phiQ.assign(responses ? nb : 0, {});
   Vector rPlus(q.getMap()), rMinus(q.getMap());
+  const bool inflow = static_cast<bool>(at.inflowForce);
+  std::vector<double> dFdb(nb, 0.0);  // a Rigid Inflow's ∂F/∂b_j
   try {
     for (int j = 0; j < nb; ++j) {
+      const double eps = (slidesWall[j] ? 1e-9 : 1e-6) * at.surfaces.lengthScale();
       moveUnknown(j, eps);
       at.model.assembler().residual(q, rPlus);
+      if (inflow) dFdb[j] = at.inflowForce(q);
       const std::vector<double> uPlus = updateAt(q);
       const auto phiPlus = responses ? responsesAt(q) : std::map<std::string, double>();
       moveUnknown(j, -eps);
       at.model.assembler().residual(q, rMinus);
+      if (inflow) dFdb[j] = (dFdb[j] - at.inflowForce(q)) / (2 * eps);
       const std::vector<double> uMinus = updateAt(q);
       const auto phiMinus = responses ? responsesAt(q) : std::map<std::string, double>();
       rx.getVectorNonConst(j)->update(-1.0 / (2 * eps), rPlus, 1.0 / (2 * eps), rMinus, 0.0);  // −∂R/∂b_j
@@ -81,6 +95,16 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
   model.computeJacobian(q);
   MultiVector Y(q.getMap(), nb);
   model.solve(rx, Y);
+  if (inflow) {  // the inflow's speed follows the surface: Y_j += dU_j g
+    MultiVector g(q.getMap(), 1);
+    model.solve(*at.minusDfDU, g);
+    const Vector gU = *g.getVector(0);
+    const double slope = at.inflowForceTangent(gU);
+    for (int j = 0; j < nb; ++j) {
+      const double dU = -(dFdb[j] + at.inflowForceTangent(*Y.getVector(j))) / slope;
+      Y.getVectorNonConst(j)->update(dU, gU, 1.0);
+    }
+  }
   for (int j = 0; j < nb; ++j) {
     const Vector y = *Y.getVector(j);
     const std::vector<double> dU = updateAlong(y);

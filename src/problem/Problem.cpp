@@ -97,9 +97,15 @@ void Problem::moveNodes(const std::vector<std::array<double, 2>>& coords) {
   m_model->invalidateJacobian();
 }
 
-SurfaceLinearizationState Problem::linearizationState() {
-  return {m_mesh,  *m_dofMap, m_physics.kernel.geometry, *m_freeSurfaces, m_walls, *m_model, *m_responses,
-          *m_solution, [this](const std::vector<std::array<double, 2>>& coords) { moveNodes(coords); }};
+SurfaceLinearizationState Problem::linearizationState(bool withInflow) {
+  SurfaceLinearizationState state{m_mesh,  *m_dofMap, m_physics.kernel.geometry, *m_freeSurfaces, m_walls, *m_model,
+                                  *m_responses, *m_solution,
+                                  [this](const std::vector<std::array<double, 2>>& coords) { moveNodes(coords); }};
+  if (!withInflow || m_bcs->rigidInflow().group.empty()) return state;
+  state.inflowForce = [this](const Vector& x) { return rigidInflowForce(x); };
+  state.minusDfDU = rigidInflowSpeedLoad(*m_solution);
+  state.inflowForceTangent = [this](const Vector& dq) { return rigidInflowForceTangent(*m_solution, dq, nullptr); };
+  return state;
 }
 
 void Problem::updateWallScales(const Vector& x) {

@@ -68,7 +68,10 @@ const SolveReport& Problem::solve() {
   if (!m_report.converged && !m_walls.empty() && !budgetWasSpent()) m_report.message += firstSolveHints();
   if (m_report.converged && !m_walls.empty())
     m_contactChanges = m_statusLoop->run(solver, *m_solution, m_physics, m_walls, m_report);
-  if (m_report.converged && !m_bcs->rigidInflow().group.empty()) balanceRigidInflow(solver);
+  // From another mesh's converged state (a refined run) the surfaces go first: that state's speed
+  // belongs to its shape, and a balance on this mesh's unconverged surfaces would be undone.
+  const bool surfacesFirst = m_warmStart && !m_freeSurfaces->empty();
+  if (m_report.converged && !m_bcs->rigidInflow().group.empty() && !surfacesFirst) balanceRigidInflow(solver);
   if (m_report.converged && !m_freeSurfaces->empty()) {
     loopFreeSurfaces(solver, {m_report.unsettledContacts, m_report.unsettledContactRatio}, "");
     // A Rigid Inflow's speed and the surfaces in turn, until the balance holds on the converged shape.
@@ -83,7 +86,9 @@ const SolveReport& Problem::solve() {
                            std::to_string(kMaxInflowRounds) + " rounds";
         break;
       }
+      const FreeSurfaceReport earlier = m_freeSurfaceReport;  // the rounds' loops count as one
       loopFreeSurfaces(solver, {0, 0.0}, "after the Rigid Inflow's speed changed: ");
+      m_freeSurfaceReport.continueFrom(earlier);
     }
     if (m_report.converged && m_bcs->releaseHeld(m_mesh)) releaseHeldAndGoOn(solver);
   }
@@ -240,13 +245,40 @@ std::string Problem::firstSolveHints() const {
                  "Exact may not help";
 }
 
+void Problem::turnWallVelocities(Vector& x, const std::vector<std::vector<std::array<double, 2>>>& normalsBefore) const {
+  // A wall node that a surface's attachment point slid along a roll has a turned normal: its
+  // velocity turns with it, so that its normal and tangential velocity relative to the tool (what
+  // the contact penalty and the friction law see) are as they were. Newton's start after the move
+  // then has no penalty residual of |u| times the turn at every dragged node.
+  auto values = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (size_t w = 0; w < m_walls.size(); ++w) {
+    const ContactWall& wall = m_walls[w];
+    for (int k = 0; k < wall.numNodes(); ++k) {
+      const auto& a = normalsBefore[w][k];
+      const auto& b = wall.curve().normals[k];
+      const double sine = a[0] * b[1] - a[1] * b[0], cosine = a[0] * b[0] + a[1] * b[1];
+      if (sine == 0.0) continue;
+      const LO n = m_dofMap->overlapIndex(wall.curve().nodes[k]);
+      if (!m_dofMap->ownsNode(n)) continue;
+      double& ux = values(m_dofMap->dof(n, kUx), 0);
+      double& uy = values(m_dofMap->dof(n, kUy), 0);
+      const double vx = cosine * ux - sine * uy, vy = sine * ux + cosine * uy;
+      ux = vx;
+      uy = vy;
+    }
+  }
+}
+
 FreeSurfaceReport Problem::convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
                                                 std::pair<int, double> unsettledAtStart, double toleranceScale) {
   FreeSurfaceLoop::Hooks hooks;
   std::pair<int, double> unsettled = unsettledAtStart;  // contact nodes the last solve left cycling
   hooks.velocities = [&] { return replicate(x, *m_dofMap); };
   hooks.moveNodes = [&](const std::vector<std::array<double, 2>>& coords) {
+    std::vector<std::vector<std::array<double, 2>>> normalsBefore;
+    for (const ContactWall& wall : m_walls) normalsBefore.push_back(wall.curve().normals);
     moveNodes(coords);
+    turnWallVelocities(x, normalsBefore);
     m_bcs->imposeOnSolution(x);
   };
   hooks.release = [&](int w, int k) {

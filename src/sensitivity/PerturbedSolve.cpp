@@ -60,10 +60,25 @@ PerturbedRun solvePerturbed(Problem& problem, const SensitivityParameter& h, dou
     // The same perturbation with the surfaces re-converged: the total derivative's difference.
     const std::vector<std::array<double, 2>> shape = problem.mesh().coords;
     Vector moving(*x, Teuchos::Copy);
-    const FreeSurfaceReport surfaces =
+    FreeSurfaceReport surfaces =
         problem.convergeFreeSurfaces(solver, moving, physics, {report.unsettledContacts, report.unsettledContactRatio},
                                      kFiniteDifferenceSurfaceTolerance);
     run.newtonIterations += surfaces.newtonIterations;
+    // A Rigid Inflow's speed and the surfaces in turn, as the solve does, until the balance holds
+    // on the re-converged shape.
+    for (int round = 0; inflow && surfaces.converged; ++round) {
+      const RigidInflowReport balance = problem.balanceRigidInflow(solver, moving, physics);
+      run.newtonIterations += balance.newtonIterations;
+      if (!balance.converged || round + 1 == Problem::kMaxInflowRounds) {
+        surfaces.converged = false;
+        surfaces.message = balance.converged ? "the Rigid Inflow's speed and the free surfaces did not settle"
+                                             : balance.message;
+        break;
+      }
+      if (balance.solves == 0) break;
+      surfaces = problem.convergeFreeSurfaces(solver, moving, physics, {0, 0.0}, kFiniteDifferenceSurfaceTolerance);
+      run.newtonIterations += surfaces.newtonIterations;
+    }
     if (surfaces.converged) {
       run.movingFunctionals = problem.evaluateResponses(moving);
     } else {

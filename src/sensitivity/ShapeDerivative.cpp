@@ -32,7 +32,7 @@ ShapeDerivative totalShapeDerivative(Problem& problem, const Sensitivity& sensit
     out.failure = "no DDM sensitivities to extend";
     return out;
   }
-  const UpdateLinearization lin(problem.linearizationState(), true);
+  const UpdateLinearization lin(problem.linearizationState(true), true);
   if (!lin.failure().empty()) {
     out.failure = lin.failure();
     return out;

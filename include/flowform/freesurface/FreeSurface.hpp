@@ -14,7 +14,8 @@
 // The update (spines): each surface node keeps its coordinate a along the chord direction c of
 // the surface as made (start → end), and its coordinate b along the outward normal m ⊥ c is
 // integrated from the start so that every segment is parallel to the mean velocity ū of its
-// two nodes:  b_{k+1} = b_k + (a_{k+1} − a_k) (ū·m)/(ū·c).
+// two nodes:  b_{k+1} = b_k + (a_{k+1} − a_k) (ū·m)/(ū·c), a_k where node k is (the update moves
+// it along m only; a refined run that starts from a coarse run's surface may have it elsewhere).
 // With P1/Q1 velocities linear along a straight segment, the volume flux through segment k is
 // L_k ū_k·n_k (ū weighted by r in axisymmetry: ū = (u_a(2r_a + r_b) + u_b(r_a + 2r_b)) /
 // (3(r_a + r_b))), so at a fixed point of the update no material crosses the surface: the
@@ -22,6 +23,14 @@
 // and the surface).
 // The node at the downstream end drags the straight group that ends there (the outlet): its
 // nodes move by the same displacement times their arc-length fraction from their other end.
+//
+// A surface that lands on a tool (the strip's surface before a roll): where the group at the
+// downstream end is a contact wall, the end node is the attachment point. It slides along the
+// tool's surface (the roll's circle about its Rotation Centre, or a straight wall's line) to where
+// the streamline from the node before it meets the tool, so that the last segment is a streamline
+// too; the wall's other nodes slide with it by their arc-length fraction from the wall's far end
+// (they stay on the tool; the far end stays put). The contact statuses of the wall's nodes stay
+// the contact loop's.
 //
 // Arc length (a surface that turns: a chip's back): x_{k+1} = x_k + λ L_k ū_k/|ū_k| from the fixed
 // start, L_k the segment lengths as made and λ the one factor that puts the last node on the line
@@ -56,13 +65,24 @@ struct FreeSurfaceStep {
   /// before its tool (spines on a wall; +∞ otherwise), whether the update placed it on a
   /// streamline (not a start, not on the tool: the unknowns of the surface's fixed point), and the
   /// directions it can move in (spines: the normal; arc length: x and y).
+  /// A node that slides along a tool's surface (a surface's attachment point and the wall nodes it
+  /// drags): rotated about `centre` (a circle; positive moves turn from `at` towards `tangent`) or
+  /// moved along `tangent` (a straight tool). `at`: the node's position when the step was made.
+  struct Slide {
+    bool on = false;
+    bool circle = false;
+    std::array<double, 2> centre{}, at{}, tangent{};
+    /// The displacement that moves the node by `amount` along the tool (an arc length on a circle).
+    std::array<double, 2> displacement(double amount) const;
+  };
   struct Move {
     GO node;
-    std::array<double, 2> normal;
+    std::array<double, 2> normal;  ///< the spine normal; a sliding node: its unit tangent along the tool
     std::array<double, 2> residual;
     double room;
     bool integrated;
     bool arcLength;
+    Slide slide{};
     std::vector<std::array<double, 2>> directions() const {
       if (arcLength) return {{1.0, 0.0}, {0.0, 1.0}};
       return {normal};
@@ -74,6 +94,7 @@ struct FreeSurfaceStep {
     GO node;
     double fraction;
     size_t end;
+    Slide slide{};  ///< a wall node dragged along its tool by an attachment point (fraction of its slide)
   };
   std::vector<Move> moves;
   std::vector<Drag> drags;
@@ -143,6 +164,9 @@ class FreeSurfaces {
     std::array<double, 2> endLinePoint{}, endLineNormal{};
     std::vector<GO> dragged;     ///< the nodes of the straight group at the downstream end
     std::vector<double> dragFraction;  ///< their arc-length fraction from the group's other end
+    /// A contact wall at the downstream end (the attachment point slides along its tool), or −1;
+    /// then `dragged` are its other nodes from the end node on (without the far end).
+    int endWall = -1;
   };
   const std::vector<Surface>& surfaces() const { return m_surfaces; }
 
@@ -150,6 +174,11 @@ class FreeSurfaces {
   /// The arc-length update of one surface into `out`; false (out.failure set) where the flow stands.
   bool arcLengthStep(const Surface& s, const Mesh& mesh, const std::function<std::array<double, 2>(GO)>& velocity,
                      Geometry geometry, FreeSurfaceStep& out) const;
+  /// The attachment point of a spine surface with an end wall into out.moves (its slide along the
+  /// tool to where the streamline from `before`, the node before it as updated, meets the tool) and
+  /// the wall's dragged nodes into out.drags; false (out.failure set) where it does not meet it.
+  bool attachmentStep(const Surface& s, const Mesh& mesh, const std::vector<ContactWall>& walls,
+                      const std::array<double, 2>& before, const std::array<double, 2>& flow, FreeSurfaceStep& out) const;
   std::vector<Surface> m_surfaces;
   double m_lengthScale = 1.0;
 };

@@ -4,8 +4,9 @@
 // and the Jacobian of the map b ↦ U(q(b), X(b)),
 //     G = ∂U/∂b + U_q Y.
 // ∂R/∂X E, ∂U/∂b (and ∂φ/∂b for the responses) are central differences in the node positions:
-// each unknown moved by ±10⁻⁶ × the surface length, the interior following by the harmonic
-// extension E (factored once); U_q and φ_q along a direction are central differences in q. The
+// each unknown moved by ±10⁻⁶ × the surface length (±10⁻⁹ for an attachment point, which slides a
+// contact wall's nodes), the interior following by the harmonic extension E (factored once);
+// with a Rigid Inflow in the state, its speed follows the unknowns (Y_j += dU_j g); U_q and φ_q along a direction are central differences in q. The
 // flow part uses the factors of K_t at the state (one back-substitution per unknown); contact
 // statuses and penalty scales are held. Used by the total shape derivative (ShapeDerivative)
 // and by the Newton step on the positions of the free-surface loop.
@@ -40,6 +41,13 @@ struct SurfaceLinearizationState {
   const Responses& responses;
   const Vector& solution;
   std::function<void(const std::vector<std::array<double, 2>>&)> moveNodes;
+  /// A Rigid Inflow whose speed U the flow's response carries (the total shape derivative; empty
+  /// for the loop's own Newton step, which holds U): its force F at x on the current mesh, −∂f/∂U,
+  /// and dF along dq at the state. Then Y_j = y_j + dU_j g with K g = −∂f/∂U and
+  /// dU_j = −(∂F/∂b_j + dF(y_j)) / dF(g), the bordered system of docs/rolling.md.
+  std::function<double(const Vector&)> inflowForce{};
+  Teuchos::RCP<const Vector> minusDfDU{};
+  std::function<double(const Vector&)> inflowForceTangent{};
 };
 
 class UpdateLinearization {

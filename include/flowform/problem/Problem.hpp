@@ -103,6 +103,9 @@ class Problem {
   /// (SolveReport::unsettledContacts); `toleranceScale` < 1 tightens the loop (FreeSurfaceLoop::run).
   FreeSurfaceReport convergeFreeSurfaces(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics,
                                          std::pair<int, double> unsettledAtStart, double toleranceScale = 1.0);
+  /// After a free-surface move: each contact wall node's velocity in x turned by the angle its
+  /// normal turned from `normalsBefore` (per wall, per node), keeping (u − v_w)·n and the slip.
+  void turnWallVelocities(Vector& x, const std::vector<std::vector<std::array<double, 2>>>& normalsBefore) const;
 
   /// The responses at x on the current mesh and walls.
   std::map<std::string, double> evaluateResponses(const Vector& x) const {
@@ -130,8 +133,13 @@ class Problem {
   /// unconstrained residual's rows of the Rigid Inflow group (h null: none).
   double rigidInflowForceTangent(const Vector& x, const Vector& dq, const SensitivityParameter* h);
 
-  /// What the linearized free-surface update reads and moves: this problem's state.
-  SurfaceLinearizationState linearizationState();
+  /// Rounds of a Rigid Inflow's balance and the free-surface loop at most (solve(), and the
+  /// finite-difference runs with re-converged surfaces).
+  static constexpr int kMaxInflowRounds = 10;
+
+  /// What the linearized free-surface update reads and moves: this problem's state; `withInflow`:
+  /// a Rigid Inflow's speed follows the surface (the total shape derivative; the loop holds it).
+  SurfaceLinearizationState linearizationState(bool withInflow = false);
 
   /// Contact/Status Update = Complementarity: from the converged first solve, the walls decide
   /// their contact zones inside Newton; if that fails, the status loop decides them. With
@@ -205,8 +213,6 @@ class Problem {
   void loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart, const std::string& context);
 
   static constexpr int kFirstTryHalvings = 3;  ///< continuation halvings of the first start with walls
-  /// Rounds of a Rigid Inflow's balance and the free-surface loop at most (solve()).
-  static constexpr int kMaxInflowRounds = 10;
   Teuchos::ParameterList m_params;
   Teuchos::RCP<const Comm> m_comm;
   std::string m_baseDir;
