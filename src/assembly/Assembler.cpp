@@ -211,6 +211,29 @@ void Assembler::residual(const Vector& xOwned, Vector& fOwned, bool applyConstra
   fOwned.doExport(*m_fOverlap, *m_dofMap.exporter(), Tpetra::ADD);
 }
 
+void Assembler::constrainResidual(const Vector& xOwned, Vector& fOwned) const {
+  // Owned nodes come first in the overlap numbering, so their overlap dofs index the owned map.
+  const Vector& xOverlap = importSolution(xOwned);
+  m_fOverlap->putScalar(0.0);
+  {
+    Workset ws = workset(xOverlap, nullptr, m_fOverlap.get(), nullptr);
+    auto f = fOwned.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto& constraints = m_bcs.constraints();
+    for (LO n = 0; n < m_dofMap.numOwnedNodes(); ++n) {
+      for (int c = 0; c < m_dofMap.numFields(m_dofMap.overlapNodes()[n]); ++c)
+        ws.f(m_dofMap.dof(n, c), 0) = f(m_dofMap.dof(n, c), 0);
+      double row[2] = {f(m_dofMap.dof(n, kUx), 0), f(m_dofMap.dof(n, kUy), 0)};
+      applyConstraintRows(constraints[n], row);
+      ws.f(m_dofMap.dof(n, kUx), 0) = row[0];
+      ws.f(m_dofMap.dof(n, kUy), 0) = row[1];
+    }
+    for (const auto& prescribed : m_prescribedRows) ws.f(prescribed.first, 0) = 0.0;
+    addConstraintRows(ws.x, ws);
+  }
+  fOwned.putScalar(0.0);
+  fOwned.doExport(*m_fOverlap, *m_dofMap.exporter(), Tpetra::ADD);
+}
+
 void Assembler::jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fOwned, NewtonDual* dual) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: assembly (Jacobian)"));
   const Vector& xOverlap = importSolution(xOwned);

@@ -66,18 +66,25 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
   const bool inflow = static_cast<bool>(at.inflowForce);
   std::vector<double> dFdb(nb, 0.0);  // a Rigid Inflow's ∂F/∂b_j
   try {
+    // One assembly per move: the unconstrained residual gives the responses' reactions and the
+    // inflow's force, then R by constraining it.
+    auto evaluateMoved = [&](Vector& r, double& force, std::map<std::string, double>& phi) {
+      at.model.assembler().residual(q, r, false);
+      if (inflow) force = at.inflowForce(r);
+      if (responses) phi = responsesAt(q, &r);
+      at.model.assembler().constrainResidual(q, r);
+    };
     for (int j = 0; j < nb; ++j) {
       const double eps = (slidesWall[j] ? 1e-9 : 1e-6) * at.surfaces.lengthScale();
+      double forcePlus = 0.0, forceMinus = 0.0;
+      std::map<std::string, double> phiPlus, phiMinus;
       moveUnknown(j, eps);
-      at.model.assembler().residual(q, rPlus);
-      if (inflow) dFdb[j] = at.inflowForce(q);
+      evaluateMoved(rPlus, forcePlus, phiPlus);
       const std::vector<double> uPlus = updateAt(q);
-      const auto phiPlus = responses ? responsesAt(q) : std::map<std::string, double>();
       moveUnknown(j, -eps);
-      at.model.assembler().residual(q, rMinus);
-      if (inflow) dFdb[j] = (dFdb[j] - at.inflowForce(q)) / (2 * eps);
+      evaluateMoved(rMinus, forceMinus, phiMinus);
       const std::vector<double> uMinus = updateAt(q);
-      const auto phiMinus = responses ? responsesAt(q) : std::map<std::string, double>();
+      dFdb[j] = (forcePlus - forceMinus) / (2 * eps);
       rx.getVectorNonConst(j)->update(-1.0 / (2 * eps), rPlus, 1.0 / (2 * eps), rMinus, 0.0);  // −∂R/∂b_j
       for (int i = 0; i < nb; ++i) m_G(i, j) = (uPlus[i] - uMinus[i]) / (2 * eps);
       for (const auto& [name, value] : phiPlus) m_phiB[j][name] = (value - phiMinus.at(name)) / (2 * eps);
@@ -146,8 +153,8 @@ std::vector<double> UpdateLinearization::updateAt(const Vector& x) const {
   return u;
 }
 
-std::map<std::string, double> UpdateLinearization::responsesAt(const Vector& x) const {
-  return m_at.responses.evaluate(x, m_at.mesh, m_at.dofMap, m_at.model.assembler(), m_at.walls);
+std::map<std::string, double> UpdateLinearization::responsesAt(const Vector& x, const Vector* reactions) const {
+  return m_at.responses.evaluate(x, m_at.mesh, m_at.dofMap, m_at.model.assembler(), m_at.walls, reactions);
 }
 
 std::vector<double> UpdateLinearization::updateAlong(const Vector& d) const {

@@ -33,8 +33,6 @@ std::string nodeLabel(const Mesh& mesh, GO node) {
 /// The group's edges, each directed as its single adjacent cell lists it (counter-clockwise).
 std::vector<std::array<GO, 2>> directedEdges(const Mesh& mesh, const BoundaryGroup& group) {
   const int npc = nodesPerCell(mesh.cellType);
-  // Every cell edge keyed by its sorted node pair -> the cell's own direction, and a count.
-  std::map<std::array<GO, 2>, std::pair<std::array<GO, 2>, int>> cellEdges;
   for (const auto& e : group.edges) {
     // A segment of zero length has no normal and no lumping weight: reject it by name.
     const auto& a = mesh.coords[e[0]];
@@ -42,8 +40,13 @@ std::vector<std::array<GO, 2>> directedEdges(const Mesh& mesh, const BoundaryGro
     if (e[0] == e[1] || (a[0] == b[0] && a[1] == b[1]))
       throw InputError(where(mesh, group) + ": zero-length segment from " + nodeLabel(mesh, e[0]) + " to " +
                        nodeLabel(mesh, e[1]) + "; every boundary segment must join two distinct points");
-    cellEdges[{std::min(e[0], e[1]), std::max(e[0], e[1])}];
   }
+  // Found before on this topology (the mesh moved since): the same orientation.
+  const auto& known = group.orientation;
+  if (known && known->edges == group.edges && known->cellNodes == mesh.cellNodes) return known->directed;
+  // Every cell edge keyed by its sorted node pair -> the cell's own direction, and a count.
+  std::map<std::array<GO, 2>, std::pair<std::array<GO, 2>, int>> cellEdges;
+  for (const auto& e : group.edges) cellEdges[{std::min(e[0], e[1]), std::max(e[0], e[1])}];
   for (GO c = 0; c < mesh.numCells(); ++c) {
     const GO* nodes = mesh.cell(c);
     for (int i = 0; i < npc; ++i) {
@@ -63,6 +66,8 @@ std::vector<std::array<GO, 2>> directedEdges(const Mesh& mesh, const BoundaryGro
                        std::to_string(value.second) + " cells)");
     directed.push_back(value.first);
   }
+  group.orientation = std::make_shared<const BoundaryGroup::Orientation>(
+      BoundaryGroup::Orientation{group.edges, mesh.cellNodes, directed});
   return directed;
 }
 

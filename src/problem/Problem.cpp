@@ -102,7 +102,7 @@ SurfaceLinearizationState Problem::linearizationState(bool withInflow) {
                                   *m_responses, *m_solution,
                                   [this](const std::vector<std::array<double, 2>>& coords) { moveNodes(coords); }};
   if (!withInflow || m_bcs->rigidInflow().group.empty()) return state;
-  state.inflowForce = [this](const Vector& x) { return rigidInflowForce(x); };
+  state.inflowForce = [this](const Vector& reactions) { return rigidInflowForceFrom(reactions); };
   state.minusDfDU = rigidInflowSpeedLoad(*m_solution);
   state.inflowForceTangent = [this](const Vector& dq) { return rigidInflowForceTangent(*m_solution, dq, nullptr); };
   return state;

@@ -336,6 +336,15 @@ std::optional<RigidInflowLinearization> Problem::rigidInflowLinearization() {
   return lin;
 }
 
+double Problem::rigidInflowForceFrom(const Vector& reactions) {
+  const RigidInflow& inflow = m_bcs->rigidInflow();
+  const BoundaryCurve curve = buildBoundaryCurve(m_mesh, m_mesh.boundary(inflow.group));
+  const double local = alongGroup(reactions, curve, inflow.direction, *m_dofMap);
+  double global = 0.0;
+  Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return global;
+}
+
 double Problem::rigidInflowForce(const Vector& x, double* scale) {
   const RigidInflow& inflow = m_bcs->rigidInflow();
   const BoundaryCurve curve = buildBoundaryCurve(m_mesh, m_mesh.boundary(inflow.group));

@@ -76,7 +76,8 @@ template <typename Scalar>
 std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const Vector* dxOwned,
                                                     const SensitivityParameter* h, const Mesh& mesh,
                                                     const DofMap& dofMap, const Assembler& assembler,
-                                                    const std::vector<ContactWall>& walls) const {
+                                                    const std::vector<ContactWall>& walls,
+                                                    const Vector* givenReactions) const {
   std::map<std::string, Scalar> values;
   if (m_responses.empty()) return values;
   constexpr bool tangent = !std::is_same_v<Scalar, double>;
@@ -84,7 +85,8 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
   // The reactions (unconstrained residual) and, for the tangent, their derivative.
   Vector reactions(dofMap.ownedMap()), dReactions(dofMap.ownedMap());
   Vector xOverlap(dofMap.overlapMap()), dxOverlap(dofMap.overlapMap());
-  assembler.residual(xOwned, reactions, false);
+  if (givenReactions) Tpetra::deep_copy(reactions, *givenReactions);
+  else assembler.residual(xOwned, reactions, false);
   if (tangent) assembler.tangent(xOwned, dxOwned, h, dReactions, false);
   xOverlap.doImport(xOwned, *dofMap.importer(), Tpetra::INSERT);
   if (dxOwned) dxOverlap.doImport(*dxOwned, *dofMap.importer(), Tpetra::INSERT);
@@ -104,9 +106,9 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
 }
 
 std::map<std::string, double> Responses::evaluate(const Vector& xOwned, const Mesh& mesh, const DofMap& dofMap,
-                                                  const Assembler& assembler,
-                                                  const std::vector<ContactWall>& walls) const {
-  return evaluateAs<double>(xOwned, nullptr, nullptr, mesh, dofMap, assembler, walls);
+                                                  const Assembler& assembler, const std::vector<ContactWall>& walls,
+                                                  const Vector* reactions) const {
+  return evaluateAs<double>(xOwned, nullptr, nullptr, mesh, dofMap, assembler, walls, reactions);
 }
 
 std::map<std::string, double> Responses::derivatives(const Vector& xOwned, const Vector& dxOwned,

@@ -253,4 +253,27 @@ TEUCHOS_UNIT_TEST(Assembly, JacobianMatchesDirectionalFiniteDifferences) {
     }
 }
 
+TEUCHOS_UNIT_TEST(Assembly, ConstrainingTheReactionsGivesTheResidual) {
+  // Assembler::constrainResidual on the unconstrained residual against the constrained assembly:
+  // the row operations are linear, so only the order of the sums differs (round-off, 1e-13 of
+  // |F|∞); a constraint kind or a traction handled differently errs by O(|F|).
+  const auto comm = worldComm();
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4})
+    for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric}) {
+      Problem problem(makeMesh(type, 6, 4, 0.2, 0.0, 2.0, 1.0, 0.2, 0.3), generalConditions(),
+                      makePhysics(geometry, kNonlinear, 0.1, 0.3, -0.7), comm);
+      auto x = problem.vector(), constrained = problem.vector(), reactions = problem.vector();
+      interpolate(problem.mesh, *problem.dofMap, kSmooth, *x);
+      problem.bcs->imposeOnSolution(*x);
+      problem.assembler->residual(*x, *constrained);
+      problem.assembler->residual(*x, *reactions, false);
+      problem.assembler->constrainResidual(*x, *reactions);
+      reactions->update(-1.0, *constrained, 1.0);
+      const double err = reactions->normInf(), scale = constrained->normInf();
+      out << caseName(type, geometry, kNonlinear) << ": |constrain(reactions) − F|∞ / |F|∞ = " << err / scale << "\n";
+      TEST_COMPARE(scale, >, 0.0);
+      TEST_COMPARE(err, <=, 1e-13 * scale);
+    }
+}
+
 }  // namespace

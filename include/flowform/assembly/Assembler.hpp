@@ -76,6 +76,11 @@ class Assembler {
   /// keep their momentum equations: at a prescribed-velocity node the entry is then the
   /// force the tool applies (the reaction), which the Boundary Force response sums.
   void residual(const Vector& xOwned, Vector& fOwned, bool applyConstraints = true) const;
+  /// The unconstrained residual at x (residual(x, f, false)) made the constrained one in place:
+  /// every row operation the assembly applies per element (constraint rows zeroed or turned,
+  /// prescribed fields' rows zeroed) is linear, so it applies to the sum as well; then the
+  /// constraint rows. One assembly serves the reactions and R (the linearized surface update).
+  void constrainResidual(const Vector& xOwned, Vector& fOwned) const;
 
   /// J = dF/dx at x into `jacobian` (built on dofMap.graph()); F(x) too when `fOwned` is given.
   /// With `dual`, the cells' stress and the walls' slip are linearized by the dual methods

@@ -42,8 +42,8 @@ struct SurfaceLinearizationState {
   const Vector& solution;
   std::function<void(const std::vector<std::array<double, 2>>&)> moveNodes;
   /// A Rigid Inflow whose speed U the flow's response carries (the total shape derivative; empty
-  /// for the loop's own Newton step, which holds U): its force F at x on the current mesh, −∂f/∂U,
-  /// and dF along dq at the state. Then Y_j = y_j + dU_j g with K g = −∂f/∂U and
+  /// for the loop's own Newton step, which holds U): its force F from the unconstrained residual
+  /// (on the current mesh), −∂f/∂U, and dF along dq at the state. Then Y_j = y_j + dU_j g with K g = −∂f/∂U and
   /// dU_j = −(∂F/∂b_j + dF(y_j)) / dF(g), the bordered system of docs/rolling.md.
   std::function<double(const Vector&)> inflowForce{};
   Teuchos::RCP<const Vector> minusDfDU{};
@@ -84,7 +84,8 @@ class UpdateLinearization {
   };
   /// U along the unknowns at x on the current mesh.
   std::vector<double> updateAt(const Vector& x) const;
-  std::map<std::string, double> responsesAt(const Vector& x) const;
+  /// `reactions`: the unconstrained residual at x on the current mesh, when already assembled.
+  std::map<std::string, double> responsesAt(const Vector& x, const Vector* reactions = nullptr) const;
 
   SurfaceLinearizationState m_at;  ///< the state linearized at
   std::string m_failure;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,15 @@ CellOrientation cellOrientation(CellType type, const std::array<double, 2>* xy);
 struct BoundaryGroup {
   std::string name;
   std::vector<std::array<GO, 2>> edges;
+  /// The edges turned to run with the material on their left (buildBoundaryCurve), kept for the
+  /// topology they were found on: finding them scans every cell, and a moving mesh rebuilds its
+  /// curves after every move (copies of the mesh share it; a different topology recomputes).
+  struct Orientation {
+    std::vector<std::array<GO, 2>> edges;  ///< the group's edges it was found for
+    std::vector<GO> cellNodes;             ///< the mesh's connectivity it was found on
+    std::vector<std::array<GO, 2>> directed;
+  };
+  mutable std::shared_ptr<const Orientation> orientation;
 };
 
 /// A physical group of dimension 2: the cells it holds.

@@ -37,8 +37,10 @@ class Responses {
   void checkWalls(const std::vector<ContactWall>& walls) const;
 
   /// Every response at x, the same on every rank.
+  /// `reactions`: the unconstrained residual at x when the caller has it (else assembled here).
   std::map<std::string, double> evaluate(const Vector& xOwned, const Mesh& mesh, const DofMap& dofMap,
-                                         const Assembler& assembler, const std::vector<ContactWall>& walls) const;
+                                         const Assembler& assembler, const std::vector<ContactWall>& walls,
+                                         const Vector* reactions = nullptr) const;
 
   /// dφ/dh of every differentiable response, with dxOwned = dq/dh: the total derivative
   /// along (dq/dh, h), the same on every rank.
@@ -64,7 +66,8 @@ class Responses {
   template <typename Scalar>
   std::map<std::string, Scalar> evaluateAs(const Vector& xOwned, const Vector* dxOwned, const SensitivityParameter* h,
                                            const Mesh& mesh, const DofMap& dofMap, const Assembler& assembler,
-                                           const std::vector<ContactWall>& walls) const;
+                                           const std::vector<ContactWall>& walls,
+                                           const Vector* givenReactions = nullptr) const;
   struct Response {
     std::string name, boundary;
     int type;  ///< index of responseTypes()
