@@ -55,9 +55,6 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
   // them by 10⁻⁹ of the surface's length: at 10⁻⁶ a wall node crosses its stick window and the
   // differences meet the friction's kink (as the mesh partials of a shape parameter do,
   // kMeshPartialMove); other unknowns by 10⁻⁶.
-  std::vector<char> slidesWall(nb, 0);
-  for (const FreeSurfaceStep::Drag& drag : m_step.drags)
-    for (int j = 0; j < nb; ++j) slidesWall[j] = slidesWall[j] || (drag.slide.on && drag.end == m_unknowns[j].move);
   MultiVector rx(q.getMap(), nb);
   m_G.shape(nb, nb);
   m_phiB.assign(responses ? nb : 0, {});
@@ -75,7 +72,8 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
       at.model.assembler().constrainResidual(q, r);
     };
     for (int j = 0; j < nb; ++j) {
-      const double eps = (slidesWall[j] ? 1e-9 : 1e-6) * at.surfaces.lengthScale();
+      const bool slidesWall = m_step.moves[m_unknowns[j].move].slide.on;  // the attachment: a wall node
+      const double eps = (slidesWall ? 1e-9 : 1e-6) * at.surfaces.lengthScale();
       double forcePlus = 0.0, forceMinus = 0.0;
       std::map<std::string, double> phiPlus, phiMinus;
       moveUnknown(j, eps);

@@ -346,35 +346,25 @@ double Problem::rigidInflowForceFrom(const Vector& reactions) {
 }
 
 double Problem::rigidInflowForce(const Vector& x, double* scale) {
-  const RigidInflow& inflow = m_bcs->rigidInflow();
-  const BoundaryCurve curve = buildBoundaryCurve(m_mesh, m_mesh.boundary(inflow.group));
   Vector r(m_dofMap->ownedMap());
   m_assembler->residual(x, r, false);
-  double local[2] = {alongGroup(r, curve, inflow.direction, *m_dofMap), 0.0};
   if (scale) {  // Σ|R_i| over the nodes with a prescribed component
     auto view = r.getLocalViewHost(Tpetra::Access::ReadOnly);
     const auto& constraints = m_bcs->constraints();
+    double local = 0.0;
     for (LO n = 0; n < m_dofMap->numOwnedNodes(); ++n)
       if (constraints[n].kind != NodeConstraint::Kind::None)
-        local[1] += std::hypot(view(m_dofMap->dof(n, kUx), 0), view(m_dofMap->dof(n, kUy), 0));
+        local += std::hypot(view(m_dofMap->dof(n, kUx), 0), view(m_dofMap->dof(n, kUy), 0));
+    Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(*scale));
   }
-  double global[2];
-  Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, 2, local, global);
-  if (scale) *scale = global[1];
-  return global[0];
+  return rigidInflowForceFrom(r);
 }
 
 double Problem::rigidInflowForceTangent(const Vector& x, const Vector& dq, const SensitivityParameter* h) {
   // dF = d · Σ_{i ∈ group} dR_i, dR the unconstrained residual's tangent along (dq, h).
-  const RigidInflow& inflow = m_bcs->rigidInflow();
-  const BoundaryCurve curve = buildBoundaryCurve(m_mesh, m_mesh.boundary(inflow.group));
-  const std::array<double, 2> d = inflow.direction;
   Vector dR(m_dofMap->ownedMap());
   m_assembler->tangent(x, &dq, h, dR, false);
-  const double local = alongGroup(dR, curve, d, *m_dofMap);
-  double global = 0.0;
-  Teuchos::reduceAll(*m_comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
-  return global;
+  return rigidInflowForceFrom(dR);
 }
 
 }  // namespace flowform

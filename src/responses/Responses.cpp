@@ -85,12 +85,11 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
   // The reactions (unconstrained residual) and, for the tangent, their derivative.
   Vector reactions(dofMap.ownedMap()), dReactions(dofMap.ownedMap());
   Vector xOverlap(dofMap.overlapMap()), dxOverlap(dofMap.overlapMap());
-  if (givenReactions) Tpetra::deep_copy(reactions, *givenReactions);
-  else assembler.residual(xOwned, reactions, false);
+  if (!givenReactions) assembler.residual(xOwned, reactions, false);
   if (tangent) assembler.tangent(xOwned, dxOwned, h, dReactions, false);
   xOverlap.doImport(xOwned, *dofMap.importer(), Tpetra::INSERT);
   if (dxOwned) dxOverlap.doImport(*dxOwned, *dofMap.importer(), Tpetra::INSERT);
-  const Workset R = reader(reactions, tangent ? &dReactions : nullptr);  // owned dofs: the overlap's first ones
+  const Workset R = reader(givenReactions ? *givenReactions : reactions, tangent ? &dReactions : nullptr);  // owned dofs: the overlap's first ones
   const Workset x = reader(xOverlap, dxOwned ? &dxOverlap : nullptr);
   const MaterialParameters<Scalar> material = materialFor<Scalar>(assembler.physics().material, h);
   const ResponseContext<Scalar> context{x, R, mesh, dofMap, assembler.physics(), material, walls, h};

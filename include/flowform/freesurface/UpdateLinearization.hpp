@@ -6,9 +6,9 @@
 // ∂R/∂X E, ∂U/∂b (and ∂φ/∂b for the responses) are central differences in the node positions:
 // each unknown moved by ±10⁻⁶ × the surface length (±10⁻⁹ for an attachment point, which slides a
 // contact wall's nodes), the interior following by the harmonic extension E (factored once);
-// with a Rigid Inflow in the state, its speed follows the unknowns (Y_j += dU_j g); U_q and φ_q along a direction are central differences in q. The
-// flow part uses the factors of K_t at the state (one back-substitution per unknown); contact
-// statuses and penalty scales are held. Used by the total shape derivative (ShapeDerivative)
+// with a Rigid Inflow in the state, its speed follows the unknowns (Y_j += dU_j g). U_q and φ_q
+// along a direction are central differences in q. The flow part uses the factors of K_t at the
+// state (one back-substitution per unknown); contact statuses and penalty scales are held. Used by the total shape derivative (ShapeDerivative)
 // and by the Newton step on the positions of the free-surface loop.
 #pragma once
 

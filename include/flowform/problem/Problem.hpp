@@ -129,7 +129,8 @@ class Problem {
   /// reaction along its direction with the traction load); with `scale`, also the force scale
   /// Σ|R_i| over the nodes with a prescribed component (collective).
   double rigidInflowForce(const Vector& x, double* scale = nullptr);
-  /// The same F from the unconstrained residual `reactions` the caller assembled (collective).
+  /// The same F from the unconstrained residual `reactions` the caller assembled, or its tangent
+  /// from the residual's tangent (collective).
   double rigidInflowForceFrom(const Vector& reactions);
   /// The force balance's tangent at x along (dq, h): d·Σ_{i∈group} (∂R_i/∂q dq + ∂R_i/∂h), the
   /// unconstrained residual's rows of the Rigid Inflow group (h null: none).
