@@ -1,4 +1,5 @@
 #include "flowform/bc/BoundaryConditions.hpp"
+#include "flowform/bc/ThermalBoundaryConditions.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -103,6 +104,7 @@ static void buildValidGroupParameters(const ValidList& valid) {
              "strip nobody pushes, docs/rolling.md). At most one group");
   valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components", finiteNumber());
   valid->set("Traction Y", 0.0, "traction t_y, force per unit area, on free components", finiteNumber());
+  ThermalBoundaryConditions::declareGroupParameters(*valid);
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParameters() {

@@ -12,6 +12,7 @@
 
 #include "flowform/contact/ToolCorners.hpp"
 #include "flowform/core/InputError.hpp"
+#include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/core/NumberRange.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/core/ValidList.hpp"
@@ -92,6 +93,7 @@ static void buildValidParameters(const ValidList& valid) {
   valid->set("Start Group", "",
              "a Contact Wall with Released Nodes = Free Surface: the boundary group at the wall's upstream end; a Free "
              "Surface group: the boundary group that shares its fixed start (docs/theory.md §3.1)");
+  ThermalBoundaryConditions::declareGroupParameters(*valid);
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {

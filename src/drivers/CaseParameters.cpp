@@ -1,6 +1,7 @@
 #include "flowform/drivers/CaseParameters.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <sstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -12,6 +13,7 @@
 #include "flowform/freesurface/FreeSurfaceLoop.hpp"
 #include "flowform/drivers/OutputFields.hpp"
 #include "flowform/mesh/MeshReader.hpp"
+#include "flowform/physics/ThermalProperties.hpp"
 #include "flowform/physics/materials/MaterialLaws.hpp"
 #include "flowform/solvers/NonlinearSolver.hpp"
 #include "flowform/responses/ResponseRegistry.hpp"
@@ -88,6 +90,10 @@ static void buildValidCaseParameters(const ValidList& valid) {
 
   // The default law's list; validateCase validates against the case's law's (physics/materials/).
   valid->set("Material", *validMaterialParameters(0), "rigid-viscoplastic law (docs/theory.md §1)");
+  // Documented here (--help, --set); validated on its own, and only when the case gives it.
+  valid->sublist("Material").set("Thermal", *ThermalProperties::validParameters(),
+                                 "the workpiece's thermal properties: given, the case has a Temperature field coupled "
+                                 "to the flow (docs/theory.md §10); absent, the case is isothermal");
 
   ParameterList& stab = valid->sublist("Stabilization", false, "pressure stabilization");
   stab.set("Beta", 0.1, "β in τ_K = β h_K² / (2 μ_K); h_K = cell diameter (docs/verification.md)", nonNegative());
@@ -227,9 +233,22 @@ void validateCase(ParameterList& params) {
   } catch (const std::exception& e) {
     throw InputError("in the case parameter list: " + cleanTeuchosMessage(e.what()));
   }
-  const ParameterList& validMaterial = *validMaterialParameters(materialLawOf(params.sublist("Material")));
-  checkTypes(params.sublist("Material"), validMaterial, "Material");
-  validateSublist(params.sublist("Material"), validMaterial, "Material");
+  // Material/Thermal is validated by itself and kept only when given: its presence is what
+  // gives a case its Temperature field (a default would give every case one).
+  ParameterList& material = params.sublist("Material");
+  std::optional<ParameterList> thermal;
+  if (material.isSublist("Thermal")) {
+    thermal = material.sublist("Thermal");
+    material.remove("Thermal");
+  }
+  const ParameterList& validMaterial = *validMaterialParameters(materialLawOf(material));
+  checkTypes(material, validMaterial, "Material");
+  validateSublist(material, validMaterial, "Material");
+  if (thermal) {
+    checkTypes(*thermal, *ThermalProperties::validParameters(), "Material/Thermal");
+    validateSublist(*thermal, *ThermalProperties::validParameters(), "Material/Thermal");
+    material.set("Thermal", *thermal);
+  }
   for (const char* name : {"Problem", "Stabilization", "Solver", "Output", "Contact", "Error Estimation",
                            "Free Surface"})
     validateSublist(params.sublist(name), valid.sublist(name), name);

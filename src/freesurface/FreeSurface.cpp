@@ -1,3 +1,4 @@
+#include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/freesurface/FreeSurface.hpp"
 
 #include <algorithm>
@@ -77,6 +78,7 @@ static void buildValidFreeSurfaceParameters(const ValidList& valid) {
       "a jet, a die land); Arc Length: every segment keeps its length and turns with the flow (a surface that "
       "turns, e.g. a chip's back); docs/theory.md §3.2",
       Teuchos::tuple<std::string>("Spines", "Arc Length"), valid.get());
+  ThermalBoundaryConditions::declareGroupParameters(*valid);
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> validFreeSurfaceParameters() {

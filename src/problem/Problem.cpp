@@ -1,10 +1,14 @@
 #include "flowform/problem/Problem.hpp"
 
+#include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/contact/ToolCorners.hpp"
 #include "flowform/contact/WallStates.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/discretization/SolutionTransfer.hpp"
 #include "flowform/mesh/MeshReader.hpp"
+#include "flowform/physics/kernels/EnergyKernel.hpp"
+#include "flowform/physics/kernels/FlowKernel.hpp"
+#include "flowform/responses/HeatFlow.hpp"
 #include "flowform/solvers/LinearSolverRegistry.hpp"
 
 namespace flowform {
@@ -35,10 +39,40 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   m_responses = std::make_unique<Responses>(m_params.sublist("Responses"), m_mesh);
   m_responses->checkWalls(m_walls);
 
-  m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings);
+  // A case with Material/Thermal has a Temperature field, after the flow's (docs/theory.md §10).
+  const ParameterList& material = m_params.sublist("Material");
+  const bool thermal = material.isSublist("Thermal");
+  FieldRegistry fields = FieldRegistry::flow();
+  if (thermal) {
+    fields.add({"Temperature", 1});
+  } else if (const std::string group = ThermalBoundaryConditions::firstThermalGroup(bcList); !group.empty()) {
+    throw InputError("Boundary Conditions/" + group +
+                     " gives a thermal condition, but the case has no temperature field: add a Material/Thermal "
+                     "sublist (Conductivity, Density, Specific Heat, Heat Fraction) or drop the entry");
+  }
+  if (!thermal) {
+    const ParameterList& responses = m_params.sublist("Responses");
+    for (auto it = responses.begin(); it != responses.end(); ++it)
+      if (responses.isSublist(responses.name(it)) && responses.sublist(responses.name(it)).isType<std::string>("Type") &&
+          responses.sublist(responses.name(it)).get<std::string>("Type") == HeatFlow::kName)
+        throw InputError("Responses/" + responses.name(it) + ": a " + HeatFlow::kName +
+                         " response needs a temperature field: add a Material/Thermal sublist");
+  }
+  m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings, fields);
   m_bcs = std::make_unique<BoundaryConditions>(bcList, m_mesh, *m_dofMap);
   m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
   m_assembler->setPhysics(m_physics);
+  if (thermal) {
+    m_assembler->setKernels({makeCellKernel(FlowKernel{}, fields),
+                             makeCellKernel(EnergyKernel(ThermalProperties::fromParameters(material.sublist("Thermal"))),
+                                            fields)});
+    const int temperature = fields.components({"Temperature"}).front();
+    std::vector<Assembler::PrescribedValue> values;
+    const ThermalBoundaryConditions thermalConditions(bcList, m_mesh);
+    for (const auto& [node, value] : thermalConditions.prescribed())
+      values.push_back({node, temperature, value});
+    m_assembler->setPrescribedValues(values);
+  }
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
   m_model = std::make_unique<FlowModel>(
       *m_assembler, createLinearSolver(m_params.sublist("Solver").sublist("Linear Solver"), *comm));

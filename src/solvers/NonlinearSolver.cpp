@@ -251,7 +251,10 @@ bool NonlinearSolver::reusedFactorSolve(Vector& x, const FlowPhysics& physics, c
 bool NonlinearSolver::isLinear(const FlowPhysics& physics) const {
   // A Newtonian material makes the bulk linear; the contact walls may not be (Coulomb's p⁺ and
   // sticking bound, complementarity's max): then Newton, even at n = 1.
-  return isNewtonian(physics.material) && m_model.assembler().contactIsLinear();
+  // Another kernel (the energy balance: its convection u·∇T and heating s:D are not linear in u)
+  // makes it nonlinear too.
+  return isNewtonian(physics.material) && m_model.assembler().contactIsLinear() &&
+         m_model.assembler().kernels().size() == 1;
 }
 
 SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const NewtonOptions& options) {

@@ -26,6 +26,7 @@
 #include "flowform/responses/CellPowers.hpp"
 #include "flowform/responses/ContactLength.hpp"
 #include "flowform/responses/FlowRate.hpp"
+#include "flowform/responses/HeatFlow.hpp"
 #include "flowform/responses/ForwardSlip.hpp"
 #include "flowform/responses/MeanPressure.hpp"
 #include "flowform/responses/NeutralAngle.hpp"
@@ -45,7 +46,7 @@ using ResponseList = TypeList<Types...>;
 using RegisteredResponses =
     ResponseList<BoundaryForce, MeanPressure, BoundaryPower, FlowRate, PlasticPower, FrictionPower, PenaltyPower,
                  StabilizationPower, DeadZone, BoundaryExtent, WallGap, ContactLength, WallForce, ThicknessRatio,
-                 ShearAngle, ToolPower, ToolTorque, NeutralAngle, ForwardSlip>;
+                 ShearAngle, ToolPower, ToolTorque, NeutralAngle, ForwardSlip, HeatFlow>;
 
 /// A type's static facts, by its index in RegisteredResponses.
 struct ResponseTypeInfo {

@@ -1,0 +1,58 @@
+// Heat Flow: Q = −Σ_i R_T,i over the group's nodes, the heat that leaves the workpiece through a
+// group held at a prescribed temperature (a cooled wall, a tool at its temperature), by
+// conduction; a case with a Temperature field (Material/Thermal, docs/theory.md §10) only.
+//
+// R_T is the energy equation's unconstrained residual (physics/kernels/EnergyKernel.hpp). With
+// Σ_a N_a = 1 its weak form gives, at a node a held at its temperature,
+//   R_T,a = ∫_Γ N_a k ∂T/∂n dΓ   (the heat that enters through Γ near a)
+// so the sum over the group is the consistent heat flux into the workpiece and Q its negative
+// (per unit depth in plane strain, total in axisymmetric models). On a group without a prescribed
+// temperature (insulated) R_T vanishes at convergence and so does Q. The sum of Q over every
+// held group closes the discrete energy balance: Σ Q = ∫ q dΩ − ∫ a·∇T dΩ (the plastic heat less
+// the enthalpy the flow carries out; docs/theory.md §10).
+#pragma once
+
+#include <string>
+
+#include "flowform/core/InputError.hpp"
+#include "flowform/responses/ResponseContext.hpp"
+
+namespace flowform {
+
+struct HeatFlow {
+  static constexpr const char* kName = "Heat Flow";
+  static constexpr const char* kDescription =
+      "the heat leaving the workpiece by conduction through a group held at a prescribed Temperature (the "
+      "temperature rows' reactions, negated); needs Material/Thermal";
+  static constexpr bool kNeedsBoundary = true, kNeedsWall = false, kReactionBased = true, kAdaptivityTarget = false,
+                        kDifferentiable = true;
+
+  static void declareParameters(Teuchos::ParameterList& list) {
+    declareBoundary(list, "the group held at its temperature");
+  }
+  explicit HeatFlow(const Teuchos::ParameterList& p) : m_boundary(p.get<std::string>("Boundary")) {}
+
+  template <typename Scalar>
+  Scalar evaluate(const ResponseContext<Scalar>& c) const {
+    if (!c.dofMap.fields().contains("Temperature"))
+      throw InputError("Responses: a Heat Flow response (group '" + m_boundary +
+                       "') needs a temperature field: give Material/Thermal");
+    const int t = c.dofMap.fields().components({"Temperature"}).front();
+    Scalar local = 0.0;
+    std::vector<char> seen(c.mesh.numNodes(), 0);
+    for (const auto& edge : c.mesh.boundary(m_boundary).edges)
+      for (GO node : edge) {
+        if (seen[node]) continue;
+        seen[node] = 1;
+        const LO n = c.dofMap.overlapIndex(node);
+        if (!c.dofMap.ownsNode(n)) continue;  // each node once, by its owner
+        local -= c.u(c.reactions, n, t);
+      }
+    return sumOverRanks(*c.dofMap.comm(), local);
+  }
+
+ private:
+  std::string m_boundary;
+};
+
+}  // namespace flowform

@@ -1,0 +1,23 @@
+# The Temperature field (Material/Thermal, docs/theory.md §10): the exact fully developed channel
+# with plastic heating (orders, energy balance; thermal_channel_checks.py), a case without the
+# sublist has no temperature unknowns, and the thermal input errors (exit 2, nothing written).
+set(FLOWFORM_PYTHON /usr/bin/python3)
+foreach(what convergence isothermal)
+  add_test(NAME thermal_channel_${what}
+           COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/thermal_channel_checks.py ${what}
+                   $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/thermal_${what})
+  set_tests_properties(thermal_channel_${what} PROPERTIES LABELS "regression")
+endforeach()
+
+flowform_exit_test(bad_input_temperature_without_thermal CASE channel_small.xml
+  SET "Boundary Conditions/top/Temperature=1"
+  CONTAINS "Boundary Conditions/top" "Material/Thermal")
+flowform_exit_test(bad_input_thermal_conductivity CASE channel_small.xml
+  SET "Material/Thermal/Conductivity=-1"
+  CONTAINS "Material/Thermal/Conductivity")
+flowform_exit_test(bad_input_heat_flow_without_thermal CASE channel_small.xml
+  SET "Responses/q/Type=Heat Flow" "Responses/q/Boundary=top"
+  CONTAINS "Responses/q" "Material/Thermal")
+flowform_exit_test(bad_input_conflicting_temperatures CASE channel_small.xml
+  SET "Material/Thermal/Conductivity=1" "Boundary Conditions/top/Temperature=1" "Boundary Conditions/inlet/Temperature=2"
+  CONTAINS "'top' and 'inlet'" "different temperatures")
