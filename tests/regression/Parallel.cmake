@@ -87,3 +87,6 @@ flowform_parallel_equals_serial(cutting_free_chip cutting.xml --tol 1e-7 --set "
 # Rolling: the Rigid Inflow's balance (its force sums reduced over the ranks, ~10 re-solves) and the
 # Neutral Angle's per-node slip gathered from the owners, with the bordered DDM.
 flowform_parallel_equals_serial(rolling rolling.xml --set "Error Estimation/Method=None")
+# The Temperature field on 2 ranks: its rows, the prescribed temperatures (owned nodes only) and
+# the Heat Flow reactions summed over the ranks.
+flowform_parallel_equals_serial(thermal_channel thermal_channel.xml)

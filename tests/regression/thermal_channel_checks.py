@@ -1,4 +1,4 @@
-"""The temperature field against the exact fully developed channel (docs/verification.md §18).
+"""The temperature field against the exact fully developed channel (docs/verification.md §19).
 
 xml/thermal_channel.xml: the power-law channel |y| <= H = 1 (σ̄ = σ0 + (e_r/γ)^(1/n), σ0 = 0.5,
 γ = 1, n = 5, e_r = sqrt(e² + e0²), e0 = 1e-3) driven by the pressure gradient G = 1, walls at
@@ -20,7 +20,7 @@ e0 = 1e-3 the two differ by 5e-4 of the rise, which is why the regularized one i
 Asserted (subcommand convergence, N = 8, 16, 32 cells across the height):
 - the largest nodal error max|T_h − T| falls with order >= 1.8 on the finest pair: the velocity's
   L2 order is 2 (docs/verification.md §3) and T integrates q twice; 0.2 below 2 covers the
-  pre-asymptotic spread (measured orders in docs/verification.md §18);
+  pre-asymptotic spread (measured orders in docs/verification.md §19);
 - at N = 32 the largest error is at most 2e-2 of the temperature rise T(0) − T_w (measured 1.6e-2);
 - the heat leaving through the walls balances the plastic heat: |Q_top + Q_bottom − η P| <=
   1e-3 η P. The discrete identity is Σ Q = ∫ q − ∫ a·∇T_h (HeatFlow.hpp): the second term

@@ -156,6 +156,20 @@ inline void interpolate(const Mesh& mesh, const DofMap& dofMap, const Field& fie
   }
 }
 
+/// x ← the flow `field` and a one-component field after the flow's ← `scalar` at the nodes
+/// (owned dofs): a case with a second field (FieldKernelTest, EnergyKernelTest).
+inline void interpolate(const Mesh& mesh, const DofMap& dofMap, const Field& field,
+                        const std::function<double(double, double)>& scalar, Vector& x) {
+  auto v = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  const Map& map = *x.getMap();
+  for (size_t i = 0; i < x.getLocalLength(); ++i) {
+    const GO g = map.getGlobalElement(static_cast<LO>(i));
+    const auto& xy = mesh.coords[dofMap.nodeOfGlobalDof(g)];
+    const int c = dofMap.fieldOfGlobalDof(g);
+    v(i, 0) = c < kNumFlowComponents ? field(xy[0], xy[1])[c] : scalar(xy[0], xy[1]);
+  }
+}
+
 inline std::set<GO> boundaryNodes(const Mesh& mesh) {
   std::set<GO> nodes;
   for (const auto& b : mesh.boundaries)

@@ -37,19 +37,6 @@ struct ThermalProblem {
   RCP<Vector> vector() const { return Teuchos::rcp(new Vector(dofMap->ownedMap())); }
 };
 
-/// x ← the flow `field` and T ← `temperature` at the nodes (owned dofs).
-void interpolate(const Mesh& mesh, const DofMap& dofMap, const Field& field,
-                 const std::function<double(double, double)>& temperature, Vector& x) {
-  auto v = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
-  const Map& map = *x.getMap();
-  for (size_t i = 0; i < x.getLocalLength(); ++i) {
-    const GO g = map.getGlobalElement(static_cast<LO>(i));
-    const auto& xy = mesh.coords[dofMap.nodeOfGlobalDof(g)];
-    const int c = dofMap.fieldOfGlobalDof(g);
-    v(i, 0) = c < kNumFlowComponents ? field(xy[0], xy[1])[c] : temperature(xy[0], xy[1]);
-  }
-}
-
 ThermalProperties properties(double rhoC) {
   ThermalProperties p;
   p.conductivity = 0.7;

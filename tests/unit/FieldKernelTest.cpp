@@ -71,19 +71,6 @@ struct TwoFieldProblem {
 
 double exactScalar(double x, double y) { return kC0 + kB * x + kD * y; }
 
-/// x ← the flow `field` and c ← `scalar` at the nodes (owned dofs).
-void interpolate(const Mesh& mesh, const DofMap& dofMap, const Field& field,
-                 const std::function<double(double, double)>& scalar, Vector& x) {
-  auto v = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
-  const Map& map = *x.getMap();
-  for (size_t i = 0; i < x.getLocalLength(); ++i) {
-    const GO g = map.getGlobalElement(static_cast<LO>(i));
-    const auto& xy = mesh.coords[dofMap.nodeOfGlobalDof(g)];
-    const int c = dofMap.fieldOfGlobalDof(g);
-    v(i, 0) = c < kNumFlowComponents ? field(xy[0], xy[1])[c] : scalar(xy[0], xy[1]);
-  }
-}
-
 /// Row `row` of J (global ids) as (node, component) → value.
 std::map<std::pair<GO, int>, double> rowOf(const FECrsMatrix& J, const DofMap& dofMap, GO row) {
   const size_t n = J.getNumEntriesInGlobalRow(row);
