@@ -17,6 +17,9 @@
 // z = -Lc, the flow runs along +z. The physical names stay the same. The loop is reversed
 // when transposed (a reflection), so the surface is counter-clockwise either way.
 //
+// Lengths and sizes are in container half-heights, times scale: scale = 50 with lengths in mm
+// is a 100 mm billet (xml/hot_extrusion.xml); scale = 1 (the default) leaves every point as it was.
+//
 // Sizes: h in the bulk, hc at the two die corners (0, exit) and (0, 1), where the velocity
 // field is singular; a Distance + Threshold field grades hc -> h over the distance dc.
 // The cell type is not set here: flowform asks gmsh for quadrilaterals (Mesh.RecombineAll,
@@ -36,7 +39,9 @@ DefineConstant[
           Name "Parameters/exit", Label "exit half-height (container half-height 1), R = 1/exit"},
   Lc = {1.5, Min 0.1, Max 20, Step 0.1, Name "Parameters/Lc", Label "container length"},
   Le = {1.5, Min 0.1, Max 20, Step 0.1, Name "Parameters/Le", Label "exit channel length"},
-  h = {0.1, Min 1e-4, Max 1, Step 0.01, Name "Parameters/h", Label "mesh size in the bulk"}
+  h = {0.1, Min 1e-4, Max 1, Step 0.01, Name "Parameters/h", Label "mesh size in the bulk"},
+  scale = {1, Min 1e-6, Max 1e6, Step 1, Name "Parameters/scale",
+           Label "the container half-height in the case's length unit (1: nondimensional; 50 for a 100 mm billet in mm)"}
 ];
 DefineConstant[
   hc = {h / 4, Min 1e-5, Max 1, Step 0.005,
@@ -63,9 +68,9 @@ ys[] = {  0,  0, exit, exit, 1,   1};
 ls[] = {  h,  h, h,    hc,   hc,  h};
 For i In {0 : 5}
   If (transpose == 1)
-    Point(i + 1) = {ys[i], xs[i], 0, ls[i]};
+    Point(i + 1) = {scale * ys[i], scale * xs[i], 0, scale * ls[i]};
   Else
-    Point(i + 1) = {xs[i], ys[i], 0, ls[i]};
+    Point(i + 1) = {scale * xs[i], scale * ys[i], 0, scale * ls[i]};
   EndIf
 EndFor
 
@@ -89,10 +94,10 @@ Field[1] = Distance;
 Field[1].PointsList = {4, 5};
 Field[2] = Threshold;
 Field[2].InField = 1;
-Field[2].SizeMin = hc;
-Field[2].SizeMax = h;
+Field[2].SizeMin = scale * hc;
+Field[2].SizeMax = scale * h;
 Field[2].DistMin = 0;
-Field[2].DistMax = dc;
+Field[2].DistMax = scale * dc;
 Background Field = 2;
 
 If (quads == 1)

@@ -7,6 +7,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Assembly_Helpers.hpp>
 
+#include "flowform/assembly/CellMaterial.hpp"
 #include "flowform/assembly/SensitivityParameter.hpp"
 #include "flowform/discretization/CellGeometry.hpp"
 #include "flowform/discretization/ElementLayout.hpp"
@@ -300,14 +301,15 @@ std::vector<CellState> Assembler::cellStates(const Vector& xOwned) const {
   CellGeometry g;
   LO dofs[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
   double values[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
+  const int temperature = temperatureComponentFor(m_dofMap, m_physics.material.law);
   for (size_t k = 0; k < m_dofMap.cells().size(); ++k) {
     computeCellGeometry(m_mesh, m_dofMap.cells()[k], geometry, g);
     m_dofMap.cellDofs(k, dofs);
     gather(ws, dofs, EqualOrderLayout::numDofs(npc), values);
+    const MaterialParameters<double> material = cellMaterial(ws, m_dofMap, k, g, m_physics.material, temperature);
     const auto d = strainRateAt(g.centroid, 0, geometry, values);
-    const double eReg = regularizedStrainRate(d.ddot(), m_physics.material);
-    states[k] = {std::sqrt(2.0 / 3.0 * d.ddot()), eReg, viscosity(eReg, m_physics.material),
-                 flowStress(eReg, m_physics.material)};
+    const double eReg = regularizedStrainRate(d.ddot(), material);
+    states[k] = {std::sqrt(2.0 / 3.0 * d.ddot()), eReg, viscosity(eReg, material), flowStress(eReg, material)};
   }
   return states;
 }

@@ -131,6 +131,20 @@ MaterialParameters<double> newtonianPredictor(const MaterialParameters<double>& 
   return p;
 }
 
+int temperatureParameter(int law) {
+  static const std::vector<int> index = [] {
+    std::vector<int> made;
+    for (const MaterialLawInfo& info : materialLaws()) {
+      int found = -1;
+      for (size_t i = 0; i < info.parameters.size(); ++i)
+        if (std::string(info.parameters[i].name) == "Temperature") found = static_cast<int>(i);
+      made.push_back(found);
+    }
+    return made;
+  }();
+  return index.at(law);
+}
+
 double& rateExponent(MaterialParameters<double>& m) { return m.values[materialLaws()[m.law].exponent]; }
 double rateExponent(const MaterialParameters<double>& m) { return m.values[materialLaws()[m.law].exponent]; }
 

@@ -8,7 +8,9 @@
 #include "flowform/mesh/MeshReader.hpp"
 #include "flowform/physics/kernels/EnergyKernel.hpp"
 #include "flowform/physics/kernels/FlowKernel.hpp"
+#include "flowform/physics/kernels/ThermalFlowKernel.hpp"
 #include "flowform/responses/HeatFlow.hpp"
+#include "flowform/responses/TemperatureResponses.hpp"
 #include "flowform/solvers/LinearSolverRegistry.hpp"
 
 namespace flowform {
@@ -53,19 +55,22 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   if (!thermal) {
     const ParameterList& responses = m_params.sublist("Responses");
     for (auto it = responses.begin(); it != responses.end(); ++it)
-      if (responses.isSublist(responses.name(it)) && responses.sublist(responses.name(it)).isType<std::string>("Type") &&
-          responses.sublist(responses.name(it)).get<std::string>("Type") == HeatFlow::kName)
-        throw InputError("Responses/" + responses.name(it) + ": a " + HeatFlow::kName +
-                         " response needs a temperature field: add a Material/Thermal sublist");
+      if (responses.isSublist(responses.name(it)) && responses.sublist(responses.name(it)).isType<std::string>("Type"))
+        for (const char* type : {HeatFlow::kName, MeanTemperature::kName, MaximumTemperature::kName})
+          if (responses.sublist(responses.name(it)).get<std::string>("Type") == type)
+            throw InputError("Responses/" + responses.name(it) + ": a " + type +
+                             " response needs a temperature field: add a Material/Thermal sublist");
   }
   m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings, fields);
   m_bcs = std::make_unique<BoundaryConditions>(bcList, m_mesh, *m_dofMap);
   m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
   m_assembler->setPhysics(m_physics);
   if (thermal) {
-    m_assembler->setKernels({makeCellKernel(FlowKernel{}, fields),
-                             makeCellKernel(EnergyKernel(ThermalProperties::fromParameters(material.sublist("Thermal"))),
-                                            fields)});
+    // A law with a temperature (Sellars–Tegart) reads the field: the flow kernel that does.
+    const auto flow = temperatureParameter(m_physics.material.law) >= 0 ? makeCellKernel(ThermalFlowKernel{}, fields)
+                                                                        : makeCellKernel(FlowKernel{}, fields);
+    m_assembler->setKernels(
+        {flow, makeCellKernel(EnergyKernel(ThermalProperties::fromParameters(material.sublist("Thermal"))), fields)});
     const int temperature = fields.components({"Temperature"}).front();
     std::vector<Assembler::PrescribedValue> values;
     const ThermalBoundaryConditions thermalConditions(bcList, m_mesh);
@@ -87,6 +92,28 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
                      ": 'Release After Free Surfaces' needs free surfaces, and the case has none");
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
+  if (thermal) startTemperature();
+}
+
+void Problem::startTemperature() {
+  // Newton's start for T: the law's own Temperature (Sellars–Tegart: its reference, which also
+  // sets the Newtonian predictor's γ), else the mean of the prescribed temperatures; the
+  // prescribed ones at their nodes. A law at T = 0 would have exp(Q/RT) = ∞.
+  const int t = m_dofMap->fields().component("Temperature");
+  const ThermalBoundaryConditions conditions(m_params.sublist("Boundary Conditions"), m_mesh);
+  double start = 0.0;
+  if (const int p = temperatureParameter(m_physics.material.law); p >= 0) {
+    start = m_physics.material.values[p];
+  } else if (!conditions.prescribed().empty()) {
+    for (const auto& [node, value] : conditions.prescribed()) start += value;
+    start /= static_cast<double>(conditions.prescribed().size());
+  }
+  auto x = m_solution->getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (LO n = 0; n < m_dofMap->numOwnedNodes(); ++n) x(m_dofMap->dof(n, t), 0) = start;
+  for (const auto& [node, value] : conditions.prescribed()) {
+    const LO n = m_dofMap->overlapIndex(node);
+    if (m_dofMap->ownsNode(n)) x(m_dofMap->dof(n, t), 0) = value;
+  }
 }
 
 Problem::~Problem() = default;

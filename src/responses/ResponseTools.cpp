@@ -6,6 +6,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
+#include "flowform/assembly/CellMaterial.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/NumberRange.hpp"
 #include "flowform/discretization/CellGeometry.hpp"
@@ -53,15 +54,19 @@ void cellIntegrals(const Workset& x, const Mesh& mesh, const DofMap& dofMap, con
   Scalar values[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
   plasticPower = stabilizationPower = 0.0;
   deadArea = 0.0;
+  // A law that depends on the temperature, with a Temperature field: the law at each cell's
+  // temperature, as the flow kernel has it (assembly/CellMaterial.hpp).
+  const int temperature = temperatureComponentFor(dofMap, material.law);
   for (size_t k = 0; k < dofMap.cells().size(); ++k) {
     computeCellGeometry(mesh, dofMap.cells()[k], geometry, g);
     dofMap.cellDofs(k, dofs);
     gather(x, dofs, EqualOrderLayout::numDofs(npc), values);
+    const MaterialParameters<Scalar> cell = cellMaterial(x, dofMap, k, g, material, temperature);
     const Scalar tau =
-        stabilizationTau(physics.kernel.beta, g.diameter, centroidViscosity(g.centroid, geometry, material, values));
+        stabilizationTau(physics.kernel.beta, g.diameter, centroidViscosity(g.centroid, geometry, cell, values));
     for (int q = 0; q < g.rule.numPoints; ++q) {
       const auto d = strainRateAt(g.rule, q, geometry, values);
-      const Scalar mu = viscosity(regularizedStrainRate(d.ddot(), material), material);
+      const Scalar mu = viscosity(regularizedStrainRate(d.ddot(), cell), cell);
       const double w = measureWeight(g.rule, q, geometry);
       plasticPower += w * 2.0 * mu * d.ddot();
       Scalar px = 0.0, py = 0.0;

@@ -90,3 +90,6 @@ flowform_parallel_equals_serial(rolling rolling.xml --set "Error Estimation/Meth
 # The Temperature field on 2 ranks: its rows, the prescribed temperatures (owned nodes only) and
 # the Heat Flow reactions summed over the ranks.
 flowform_parallel_equals_serial(thermal_channel thermal_channel.xml)
+# The temperature-dependent law on 2 ranks: the flow kernel reading each cell's temperature, the
+# contact walls' penalty scales from the cells' states at their temperatures.
+flowform_parallel_equals_serial(hot_extrusion hot_extrusion.xml)

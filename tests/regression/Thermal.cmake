@@ -1,8 +1,8 @@
 # The Temperature field (Material/Thermal, docs/theory.md §10): the exact fully developed channel
-# with plastic heating (orders, energy balance; thermal_channel_checks.py), a case without the
+# with plastic heating (orders, energy balance; thermal_channel_checks.py), its adiabatic limit, a case without the
 # sublist has no temperature unknowns, and the thermal input errors (exit 2, nothing written).
 set(FLOWFORM_PYTHON /usr/bin/python3)
-foreach(what convergence isothermal)
+foreach(what convergence adiabatic isothermal)
   add_test(NAME thermal_channel_${what}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/thermal_channel_checks.py ${what}
                    $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/thermal_${what})
@@ -21,3 +21,9 @@ flowform_exit_test(bad_input_heat_flow_without_thermal CASE channel_small.xml
 flowform_exit_test(bad_input_conflicting_temperatures CASE channel_small.xml
   SET "Material/Thermal/Conductivity=1" "Boundary Conditions/top/Temperature=1" "Boundary Conditions/inlet/Temperature=2"
   CONTAINS "'top' and 'inlet'" "different temperatures")
+# Hot extrusion of AA6063 in real units: the isothermal limit (k = 1e9), thermal softening, the
+# adiabatic bound and the energy balance (hot_extrusion_checks.py).
+add_test(NAME hot_extrusion_checks
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/hot_extrusion_checks.py
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/hot_extrusion)
+set_tests_properties(hot_extrusion_checks PROPERTIES LABELS "regression")

@@ -27,11 +27,20 @@ Asserted (subcommand convergence, N = 8, 16, 32 cells across the height):
   vanishes for the exact T and is a discretization error of T_h (measured 5e-5 at N = 16);
 - the two walls' heat flows are equal to 1e-8 (the problem is symmetric in y; the mesh too).
 
+Subcommand adiabatic (the adiabatic limit): the same channel with its walls insulated and the
+inlet held at T_in = 1 (the shipped case edited: the walls' Temperature moved to the inlet).
+No heat leaves through the walls, so the product's mean (flux-weighted) exit temperature rise is
+(η P − Q_in) / (ρc Q), P the plastic power, Q_in the heat conducted back out through the inlet
+(its Heat Flow), Q the flux. Asserted at N = 8, 16, 32 for ρc = 1 (42 % of the heat conducted
+back out at the inlet) and ρc = 100 (1 %): the relative difference falls with order >= 1.5 on
+the finest pair and is at most 1e-3 (ρc = 1) and 5e-3 (ρc = 100) at N = 32 (measured 4.4e-4 and
+2.5e-3, orders 2.0 and 2.1: the lumped mean temperature and ∫ a·∇T_h are second order).
+
 Subcommand isothermal: xml/channel.xml has 3 dofs per node (no Temperature field without
 Material/Thermal), and the same flow with the field has 4 and the same velocities to 1e-10 (the
 flow does not read T).
 
-usage: thermal_channel_checks.py {convergence|isothermal} FLOWFORM SOURCE_DIR OUTDIR
+usage: thermal_channel_checks.py {convergence|adiabatic|isothermal} FLOWFORM SOURCE_DIR OUTDIR
 """
 import json
 import math
@@ -105,6 +114,46 @@ def convergence(flowform, source, outdir):
     return failed
 
 
+def adiabatic_case(source, outdir):
+    """The shipped case with its walls insulated and the inlet held at T_w; more responses."""
+    with open(os.path.join(source, "xml", "thermal_channel.xml")) as f:
+        text = f.read()
+    held = '      <Parameter name="Temperature" type="double" value="1.0"/>      <!-- T_w -->\n'
+    inlet = '    <ParameterList name="inlet">\n      <Parameter name="Type" type="string" value="Velocity"/>\n'
+    if text.count(held) != 2 or text.count(inlet) != 1:
+        raise SystemExit("xml/thermal_channel.xml no longer has the two wall temperatures and the inlet this check edits")
+    text = text.replace(held, "").replace(inlet, inlet + held)
+    text = text.replace('"../meshes/channel.geo"', '"' + os.path.join(source, "meshes", "channel.geo") + '"')
+    path = os.path.join(outdir, "adiabatic_channel.xml")
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def adiabatic(flowform, source, outdir):
+    case = adiabatic_case(source, outdir)
+    responses = ["Responses/inlet_heat/Type=Heat Flow", "Responses/inlet_heat/Boundary=inlet",
+                 "Responses/exit_temperature/Type=Mean Temperature", "Responses/exit_temperature/Boundary=outlet",
+                 "Responses/flux/Type=Flow Rate", "Responses/flux/Boundary=outlet"]
+    failed = 0
+    for rho_c, bound in ((1.0, 1e-3), (100.0, 5e-3)):
+        differences = []
+        for n in (8, 16, 32):
+            out = os.path.join(outdir, f"rc{rho_c:g}_N{n}")
+            r = run(flowform, case, out, n, launcher.set_args(responses + [f"Material/Thermal/Density={rho_c}"]))
+            f = r.summary["functionals"]
+            predicted = (ETA * f["plastic_power"] - f["inlet_heat"]) / (rho_c * f["flux"])
+            rise = f["exit_temperature"] - T_WALL
+            differences.append(abs(rise / predicted - 1.0))
+            print(f"rho c = {rho_c:g}, N = {n:3d}: exit rise {rise:.8f}, (eta P - Q_in)/(rho c Q) {predicted:.8f}, "
+                  f"difference {differences[-1]:.3e}; {f['inlet_heat'] / (ETA * f['plastic_power']):.1%} of the heat "
+                  f"back out through the inlet")
+        order = math.log2(differences[-2] / differences[-1])
+        failed += check(order >= 1.5, f"rho c = {rho_c:g}: finest-pair order {order:.2f} >= 1.5")
+        failed += check(differences[-1] <= bound, f"rho c = {rho_c:g}: N = 32 difference {differences[-1]:.2e} <= {bound:g}")
+    return failed
+
+
 def isothermal(flowform, source, outdir):
     failed = 0
     plain = run(flowform, os.path.join(source, "xml", "channel.xml"), os.path.join(outdir, "plain"), 16)
@@ -122,7 +171,7 @@ def isothermal(flowform, source, outdir):
 def main():
     what, flowform, source, outdir = sys.argv[1:5]
     os.makedirs(outdir, exist_ok=True)
-    failed = {"convergence": convergence, "isothermal": isothermal}[what](flowform, source, outdir)
+    failed = {"convergence": convergence, "adiabatic": adiabatic, "isothermal": isothermal}[what](flowform, source, outdir)
     return verdict(failed)
 
 

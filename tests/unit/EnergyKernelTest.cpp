@@ -2,6 +2,8 @@
 //  - its assembled Jacobian (T rows with u columns: convection, heating, SUPG's τ(u)) matches
 //    central differences of the assembled residual, on P1 and Q1 meshes, plane and
 //    axisymmetric, in the diffusive (ρc = 1) and convective (ρc = 1e3: cell Péclet ≫ 1) regimes;
+//  - with a temperature-dependent law (Sellars–Tegart, ThermalFlowKernel) the same, the flow rows
+//    now with T columns;
 //  - without flow (u = 0: held on three sides, free on the fourth) and with T prescribed on the boundary to T = a + b x + d y in plane
 //    strain, a linear T is reproduced (no heating, no convection, diffusion exact for linear T).
 #include "AssemblyProblem.hpp"
@@ -9,6 +11,7 @@
 #include "flowform/discretization/FieldRegistry.hpp"
 #include "flowform/physics/kernels/EnergyKernel.hpp"
 #include "flowform/physics/kernels/FlowKernel.hpp"
+#include "flowform/physics/kernels/ThermalFlowKernel.hpp"
 
 namespace {  // AssemblyProblem.hpp's, with its using-declarations
 
@@ -25,14 +28,16 @@ struct ThermalProblem {
   std::unique_ptr<Assembler> assembler;
 
   ThermalProblem(Mesh m, const ParameterList& bcList, const FlowPhysics& physics, const RCP<const Comm>& comm,
-                 const ThermalProperties& properties)
+                 const ThermalProperties& properties, bool temperatureDependentFlow = false)
       : mesh(std::move(m)) {
     const FieldRegistry fields = flowAndTemperature();
     dofMap = std::make_unique<DofMap>(mesh, comm, std::vector<std::array<GO, 2>>{}, fields);
     bcs = std::make_unique<BoundaryConditions>(bcList, mesh, *dofMap);
     assembler = std::make_unique<Assembler>(mesh, *dofMap, *bcs);
     assembler->setPhysics(physics);
-    assembler->setKernels({makeCellKernel(FlowKernel{}, fields), makeCellKernel(EnergyKernel(properties), fields)});
+    assembler->setKernels({temperatureDependentFlow ? makeCellKernel(ThermalFlowKernel{}, fields)
+                                                    : makeCellKernel(FlowKernel{}, fields),
+                           makeCellKernel(EnergyKernel(properties), fields)});
   }
   RCP<Vector> vector() const { return Teuchos::rcp(new Vector(dofMap->ownedMap())); }
 };
@@ -73,6 +78,41 @@ TEUCHOS_UNIT_TEST(EnergyKernel, JacobianMatchesFiniteDifferences) {
             << ", rho c = " << rhoC << ": |Jv - FD|inf / |Jv|inf = " << err / scale << "\n";
         TEST_COMPARE(err, <=, 1e-7 * scale);
       }
+}
+
+TEUCHOS_UNIT_TEST(EnergyKernel, TemperatureDependentLawJacobianMatchesFiniteDifferences) {
+  // Sellars–Tegart read at each cell's temperature by the flow (ThermalFlowKernel) and by the
+  // heating: the Jacobian's ∂R_u/∂T and ∂R_T/∂T through σ̄(T) against central differences, as
+  // above. Q/(R T) ≈ 25 at T ≈ 700: σ̄ changes by about 3 % per kelvin, a stiff coupling.
+  const auto comm = worldComm();
+  MaterialParameters<double> law;
+  law.law = kMaterialLawIndex<SellarsTegart>;
+  for (int i = 0; i < SellarsTegart::kNumParameters; ++i) law.values[i] = SellarsTegart::kParameters[i].defaultValue;
+  law.cutoff = 1e-2;
+  const std::function<double(double, double)> temperature = [](double x, double y) {
+    return 700.0 + 15.0 * std::sin(1.3 * x - 0.7 * y);
+  };
+  const Field direction = [](double x, double y) {
+    return std::array<double, 3>{std::cos(0.7 * x + 2.0 * y), std::sin(1.9 * x - 0.5 * y), std::cos(1.2 * x * y)};
+  };
+  const std::function<double(double, double)> temperatureDirection = [](double x, double y) { return std::cos(x + y); };
+  for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4})
+    for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric}) {
+      FlowPhysics physics = makePhysics(geometry, kNonlinear, 0.1, 0.3, -0.7);
+      physics.material = law;
+      ThermalProblem problem(makeMesh(type, 6, 4, 0.2, 0.0, 2.0, 1.0, 0.2, 0.3), generalConditions(), physics, comm,
+                             properties(1.0), true);
+      auto x = problem.vector(), v = problem.vector(), jv = problem.vector(), fp = problem.vector();
+      interpolate(problem.mesh, *problem.dofMap, kSmooth, temperature, *x);
+      problem.bcs->imposeOnSolution(*x);
+      interpolate(problem.mesh, *problem.dofMap, direction, temperatureDirection, *v);
+      jacobianAndDifference(*problem.assembler, *x, *v, 1e-6, *jv, *fp);
+      fp->update(-1.0, *jv, 1.0);
+      const double err = fp->normInf(), scale = jv->normInf();
+      out << cellTypeName(type) << (geometry == Geometry::Axisymmetric ? ", axisymmetric" : ", plane")
+          << ", Sellars-Tegart: |Jv - FD|inf / |Jv|inf = " << err / scale << "\n";
+      TEST_COMPARE(err, <=, 1e-7 * scale);
+    }
 }
 
 TEUCHOS_UNIT_TEST(EnergyKernel, LinearTemperatureWithoutFlowIsExact) {

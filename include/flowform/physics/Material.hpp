@@ -42,6 +42,21 @@ Scalar flowStress(const Scalar& eReg, const MaterialParameters<PScalar>& m) {
   return lawFlowStress(eReg, m);
 }
 
+/// The material at temperature T (a Temperature field's value in a cell): the law's "Temperature"
+/// parameter replaced by T, the others carried over (with their seeded derivatives); the
+/// material unchanged, in Scalar, when its law does not depend on T. Scalar may carry the
+/// derivative of T with respect to the dofs (the Jacobian's coupling block ∂R_u/∂T).
+template <typename Scalar, typename PScalar>
+MaterialParameters<Scalar> atTemperature(const MaterialParameters<PScalar>& m, const Scalar& T) {
+  MaterialParameters<Scalar> out;
+  out.law = m.law;
+  for (int i = 0; i < kMaxMaterialParameters; ++i) out.values[i] = Scalar(m.values[i]);
+  out.cutoff = Scalar(m.cutoff);
+  const int t = temperatureParameter(m.law);
+  if (t >= 0) out.values[t] = T;
+  return out;
+}
+
 /// μ = σ̄ / (3 e_r).
 template <typename Scalar, typename PScalar>
 Scalar viscosity(const Scalar& eReg, const MaterialParameters<PScalar>& m) {

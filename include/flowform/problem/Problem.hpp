@@ -201,6 +201,9 @@ class Problem {
  private:
   /// Penalty scales of every wall from the state x.
   void updateWallScales(const Vector& x);
+  /// The Temperature field's start (constructor): the law's reference temperature or the mean
+  /// prescribed one, the prescribed values at their nodes.
+  void startTemperature();
   /// The groups marked Release After Free Surfaces are released (BoundaryConditions::releaseHeld):
   /// the flow is re-solved and the free-surface loop goes on from the converged shape; its report
   /// continues the held loop's (FreeSurfaceReport::continueFrom).

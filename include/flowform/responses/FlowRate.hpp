@@ -24,14 +24,25 @@ struct FlowRate {
 
   template <typename Scalar>
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
-    const Mesh& mesh = c.mesh;
-    const BoundaryCurve curve = buildBoundaryCurve(mesh, mesh.boundary(m_boundary));
+    const BoundaryCurve curve = buildBoundaryCurve(c.mesh, c.mesh.boundary(m_boundary));
+    const auto w = fluxWeights(c.mesh, curve, c.geometry());
+    Scalar local = 0.0;
+    for (size_t k = 0; k < curve.nodes.size(); ++k) {  // each node by its owner
+      const LO n = c.dofMap.overlapIndex(curve.nodes[k]);
+      if (!c.dofMap.ownsNode(n)) continue;
+      local += w[k][0] * c.u(c.x, n, kUx) + w[k][1] * c.u(c.x, n, kUy);
+    }
+    return sumOverRanks(*c.dofMap.comm(), local);
+  }
+
+  /// w_k = Σ_segments n_s ∫ N_k dΓ at each node of `curve`: Q = Σ_k u_k·w_k.
+  static std::vector<std::array<double, 2>> fluxWeights(const Mesh& mesh, const BoundaryCurve& curve, Geometry geometry) {
     const size_t numNodes = curve.nodes.size();
     std::vector<std::array<double, 2>> w(numNodes, {0.0, 0.0});
     for (size_t sgm = 0; sgm < curve.segmentLength.size(); ++sgm) {
       const size_t a = sgm, b = (sgm + 1) % numNodes;
       const auto& normal = curve.segmentNormals[sgm];
-      integrateSegment(mesh.coords[curve.nodes[a]], mesh.coords[curve.nodes[b]], c.geometry(),
+      integrateSegment(mesh.coords[curve.nodes[a]], mesh.coords[curve.nodes[b]], geometry,
                        [&](double Na, double Nb, double ws) {
         for (int d = 0; d < 2; ++d) {
           w[a][d] += Na * ws * normal[d];
@@ -39,13 +50,7 @@ struct FlowRate {
         }
       });
     }
-    Scalar local = 0.0;
-    for (size_t k = 0; k < numNodes; ++k) {  // each node by its owner
-      const LO n = c.dofMap.overlapIndex(curve.nodes[k]);
-      if (!c.dofMap.ownsNode(n)) continue;
-      local += w[k][0] * c.u(c.x, n, kUx) + w[k][1] * c.u(c.x, n, kUy);
-    }
-    return sumOverRanks(*c.dofMap.comm(), local);
+    return w;
   }
 
  private:

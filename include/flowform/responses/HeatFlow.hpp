@@ -14,8 +14,7 @@
 
 #include <string>
 
-#include "flowform/core/InputError.hpp"
-#include "flowform/responses/ResponseContext.hpp"
+#include "flowform/responses/TemperatureResponses.hpp"
 
 namespace flowform {
 
@@ -34,10 +33,7 @@ struct HeatFlow {
 
   template <typename Scalar>
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
-    if (!c.dofMap.fields().contains("Temperature"))
-      throw InputError("Responses: a Heat Flow response (group '" + m_boundary +
-                       "') needs a temperature field: give Material/Thermal");
-    const int t = c.dofMap.fields().components({"Temperature"}).front();
+    const int t = temperatureComponent(c.dofMap, "the Heat Flow through '" + m_boundary + "'");
     Scalar local = 0.0;
     std::vector<char> seen(c.mesh.numNodes(), 0);
     for (const auto& edge : c.mesh.boundary(m_boundary).edges)

@@ -31,6 +31,7 @@
 #include "flowform/responses/MeanPressure.hpp"
 #include "flowform/responses/NeutralAngle.hpp"
 #include "flowform/responses/ShearAngle.hpp"
+#include "flowform/responses/TemperatureResponses.hpp"
 #include "flowform/responses/ThicknessRatio.hpp"
 #include "flowform/responses/ToolPower.hpp"
 #include "flowform/responses/ToolTorque.hpp"
@@ -46,7 +47,8 @@ using ResponseList = TypeList<Types...>;
 using RegisteredResponses =
     ResponseList<BoundaryForce, MeanPressure, BoundaryPower, FlowRate, PlasticPower, FrictionPower, PenaltyPower,
                  StabilizationPower, DeadZone, BoundaryExtent, WallGap, ContactLength, WallForce, ThicknessRatio,
-                 ShearAngle, ToolPower, ToolTorque, NeutralAngle, ForwardSlip, HeatFlow>;
+                 ShearAngle, ToolPower, ToolTorque, NeutralAngle, ForwardSlip, HeatFlow,
+                 MeanTemperature, MaximumTemperature>;
 
 /// A type's static facts, by its index in RegisteredResponses.
 struct ResponseTypeInfo {

@@ -21,8 +21,10 @@
 // (k ∂T/∂n = 0: the natural condition); prescribed temperatures are rows T − T_b. Plane
 // strain: dΩ = dx dy; axisymmetric: dΩ = 2π r dr dz, D_θθ = u_r/r in s:D.
 //
-// The flow does not read T (a temperature-independent law): the coupling is one way, but the
-// system is solved as one (one Newton, the Jacobian's block ∂R_T/∂u by Sacado).
+// q uses the law at the cell's temperature T_K (the flow kernel's, ThermalFlowKernel.hpp), so it
+// is the flow's dissipation in every cell. With a temperature-independent law the flow does not
+// read T and the coupling is one way; either way the system is solved as one (one Newton, the
+// Jacobian's blocks ∂R_T/∂u and, with ThermalFlowKernel, ∂R_u/∂T by Sacado).
 #pragma once
 
 #include <cmath>
@@ -33,6 +35,7 @@
 #include "flowform/physics/Material.hpp"
 #include "flowform/physics/PhysicsKernel.hpp"
 #include "flowform/physics/ThermalProperties.hpp"
+#include "flowform/physics/kernels/ThermalFlowKernel.hpp"
 
 namespace flowform {
 
@@ -59,6 +62,9 @@ struct EnergyKernel {
     const double k = m_properties.conductivity, rhoC = m_properties.capacity(), eta = m_properties.heatFraction;
     const double h = c.cell.diameter;
     const double diffusive = 9.0 * (4.0 * k / (h * h)) * (4.0 * k / (h * h));
+    // The law at the cell's temperature T_K, as the flow kernel's (ThermalFlowKernel.hpp): the
+    // heat is the flow's dissipation exactly (unchanged for a law without a temperature).
+    const MaterialParameters<Scalar> material = atTemperature(c.material, centroidTemperature(c.cell, values, C, kT));
     for (int q = 0; q < cq.numPoints; ++q) {
       const double w = measureWeight(cq, q, geometry);
       Scalar ax = 0.0, ay = 0.0, tx = 0.0, ty = 0.0;
@@ -72,7 +78,7 @@ struct EnergyKernel {
       ay *= rhoC;
       const StrainRate<Scalar> d = strainRateAt(cq, q, geometry, values);
       const Scalar ddot = d.ddot();
-      const Scalar heating = eta * 2.0 * viscosity(regularizedStrainRate(ddot, c.material), c.material) * ddot;
+      const Scalar heating = eta * 2.0 * viscosity(regularizedStrainRate(ddot, material), material) * ddot;
       const Scalar tau = 1.0 / sqrt(4.0 * (ax * ax + ay * ay) / (h * h) + diffusive);
       const Scalar strong = ax * tx + ay * ty - heating;  // a·∇T − q (the diffusion of T_h dropped)
       for (int a = 0; a < cq.numNodes; ++a) {

@@ -50,6 +50,11 @@ MaterialParameters<double> materialFromParameters(const Teuchos::ParameterList& 
 bool isNewtonian(const MaterialParameters<double>& m);
 /// The Newtonian predictor of any law: the power law with σ0 = 0, n = 1 and the law's γ.
 MaterialParameters<double> newtonianPredictor(const MaterialParameters<double>& m);
+/// The index of law `law`'s parameter called "Temperature" (Sellars-Tegart's T), −1 when the law
+/// does not depend on the temperature. With a Temperature field that parameter is the field's
+/// value in each cell (physics/Material.hpp atTemperature), and its own value the start of the
+/// field's Newton iteration.
+int temperatureParameter(int law);
 /// n, the parameter the continuation moves (NonlinearSolver).
 double& rateExponent(MaterialParameters<double>& m);
 double rateExponent(const MaterialParameters<double>& m);
