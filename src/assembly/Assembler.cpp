@@ -105,7 +105,33 @@ void Assembler::setPrescribedValues(const std::vector<PrescribedValue>& values) 
   }
 }
 
+void Assembler::setHeatTransfer(std::vector<ThermalBoundaryConditions::TransferEdge> edges, int component) {
+  m_transferEdges = std::move(edges);
+  m_transferComponent = component;
+}
+
 // --- the loops ------------------------------------------------------------------------------
+
+template <typename EvalT>
+void Assembler::assembleHeatTransfer(Workset& ws) const {
+  // R_T[a] += ∫_edge N_a h (T − T_a) dΓ, T linear along the edge (× 2π r axisymmetric).
+  using Scalar = typename EvalT::template Scalar<2>;
+  const auto& overlapNodes = m_dofMap.overlapNodes();
+  for (const auto& e : m_transferEdges) {
+    const LO dofs[2] = {m_dofMap.dof(e.nodes[0], m_transferComponent), m_dofMap.dof(e.nodes[1], m_transferComponent)};
+    Scalar T[2], R[2] = {0.0, 0.0};
+    gather(ws, dofs, 2, T);
+    integrateSegment(m_mesh.coords[overlapNodes[e.nodes[0]]], m_mesh.coords[overlapNodes[e.nodes[1]]],
+                     m_physics.kernel.geometry, [&](double N0, double N1, double w) {
+                       const Scalar excess = N0 * T[0] + N1 * T[1] - e.ambient;
+                       R[0] += w * N0 * e.coefficient * excess;
+                       R[1] += w * N1 * e.coefficient * excess;
+                     });
+    for (int a = 0; a < 2; ++a)
+      if (!m_prescribedDof.empty() && m_prescribedDof[dofs[a]]) R[a] = 0.0;  // the owner adds T − T_b
+    scatter(ws, dofs, 2, dofs, 2, R);
+  }
+}
 
 template <typename EvalT>
 void Assembler::assembleCells(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const {
@@ -206,6 +232,7 @@ void Assembler::residual(const Vector& xOwned, Vector& fOwned, bool applyConstra
     assembleCells<ResidualEval>(ws, nullptr, applyConstraints);
     addTractions(ws, applyConstraints);
     if (m_walls) assembleContact<ResidualEval>(ws, nullptr, applyConstraints);
+    if (applyConstraints) assembleHeatTransfer<ResidualEval>(ws);
     if (applyConstraints) addConstraintRows(ws.x, ws);
   }
   fOwned.putScalar(0.0);
@@ -229,6 +256,7 @@ void Assembler::constrainResidual(const Vector& xOwned, Vector& fOwned) const {
       ws.f(m_dofMap.dof(n, kUy), 0) = row[1];
     }
     for (const auto& prescribed : m_prescribedRows) ws.f(prescribed.first, 0) = 0.0;
+    assembleHeatTransfer<ResidualEval>(ws);
     addConstraintRows(ws.x, ws);
   }
   fOwned.putScalar(0.0);
@@ -246,6 +274,7 @@ void Assembler::jacobian(const Vector& xOwned, FECrsMatrix& jacobian, Vector* fO
     ws.dual = dual;
     assembleCells<JacobianEval>(ws, nullptr, true);
     if (m_walls) assembleContact<JacobianEval>(ws, nullptr, true);
+    assembleHeatTransfer<JacobianEval>(ws);
     addConstraintRows(ws.x, ws);
     if (fOwned) addTractions(ws);
   }
@@ -279,6 +308,7 @@ void Assembler::tangent(const Vector& xOwned, const Vector* dxOwned, const Sensi
     assembleCells<TangentEval>(ws, h, applyConstraints);
     // The tractions depend on neither x nor h.
     if (m_walls) assembleContact<TangentEval>(ws, h, applyConstraints);
+    if (applyConstraints) assembleHeatTransfer<TangentEval>(ws);
     // The constraint rows a·u − b are linear in u and independent of h: their derivative is a·du.
     if (applyConstraints && dxOwned) addConstraintRows(ws.dx, ws, false);
   }

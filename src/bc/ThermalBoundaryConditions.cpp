@@ -1,8 +1,10 @@
 #include "flowform/bc/ThermalBoundaryConditions.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <unordered_set>
 
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/NumberRange.hpp"
@@ -10,13 +12,36 @@
 namespace flowform {
 
 namespace {
-constexpr const char* kThermalEntries[] = {"Temperature"};
+constexpr const char* kThermalEntries[] = {"Temperature", "Heat Transfer Coefficient", "Ambient Temperature",
+                                           "Tool Temperature"};
+
+bool isContactWall(const Teuchos::ParameterList& group) {
+  return group.isType<std::string>("Type") && group.get<std::string>("Type") == "Contact Wall";
+}
+
+double readDouble(const Teuchos::ParameterList& group, const std::string& groupName, const char* entry) {
+  if (!group.isType<double>(entry))
+    throw InputError("Boundary Conditions/" + groupName + "/" + entry + " must be of type double");
+  const double v = group.get<double>(entry);
+  if (!std::isfinite(v)) throw InputError("Boundary Conditions/" + groupName + "/" + entry + " must be finite");
+  return v;
+}
+
+GO edgeKey(GO a, GO b, GO numNodes) { return std::min(a, b) * numNodes + std::max(a, b); }
 }
 
 void ThermalBoundaryConditions::declareGroupParameters(Teuchos::ParameterList& valid) {
   valid.set("Temperature", 0.0,
             "prescribed temperature on the group's nodes (a case with Material/Thermal only; a group without it is "
             "insulated)",
+            finiteNumber());
+  valid.set("Heat Transfer Coefficient", 0.0,
+            "h >= 0: the heat h (T - T_a) per unit area leaves through the group, T_a its Ambient Temperature (Tool "
+            "Temperature on a Contact Wall) [power / (area temperature)]; a case with Material/Thermal only",
+            nonNegative());
+  valid.set("Ambient Temperature", 0.0, "T_a of the Heat Transfer Coefficient (a group that is not a Contact Wall)",
+            finiteNumber());
+  valid.set("Tool Temperature", 0.0, "T_a of the Heat Transfer Coefficient on a Contact Wall: the tool's temperature",
             finiteNumber());
 }
 
@@ -35,11 +60,7 @@ ThermalBoundaryConditions::ThermalBoundaryConditions(const Teuchos::ParameterLis
   for (auto it = bcList.begin(); it != bcList.end(); ++it) {
     const std::string& name = bcList.name(it);
     if (!bcList.isSublist(name) || !bcList.sublist(name).isParameter("Temperature")) continue;
-    const Teuchos::ParameterList& group = bcList.sublist(name);
-    if (!group.isType<double>("Temperature"))
-      throw InputError("Boundary Conditions/" + name + "/Temperature must be of type double");
-    const double t = group.get<double>("Temperature");
-    if (!std::isfinite(t)) throw InputError("Boundary Conditions/" + name + "/Temperature must be finite");
+    const double t = readDouble(bcList.sublist(name), name, "Temperature");
     if (!mesh.hasBoundary(name))
       throw InputError("Boundary Conditions/" + name + ": mesh '" + mesh.source +
                        "' has no boundary group of that name; it has: " + mesh.boundaryNames());
@@ -56,6 +77,52 @@ ThermalBoundaryConditions::ThermalBoundaryConditions(const Teuchos::ParameterLis
       }
   }
   for (const auto& [node, value] : values) m_prescribed.push_back({node, value.first});
+
+  for (auto it = bcList.begin(); it != bcList.end(); ++it) {
+    const std::string& name = bcList.name(it);
+    if (!bcList.isSublist(name)) continue;
+    const Teuchos::ParameterList& group = bcList.sublist(name);
+    const bool wall = isContactWall(group);
+    const char* ambientName = wall ? "Tool Temperature" : "Ambient Temperature";
+    const char* otherName = wall ? "Ambient Temperature" : "Tool Temperature";
+    if (group.isParameter(otherName))
+      throw InputError("Boundary Conditions/" + name + "/" + otherName + ": a " +
+                       (wall ? std::string("Contact Wall") : std::string("group that is not a Contact Wall")) +
+                       " names the temperature its heat goes to '" + ambientName + "'");
+    const bool hasCoefficient = group.isParameter("Heat Transfer Coefficient");
+    if (group.isParameter(ambientName) && !hasCoefficient)
+      throw InputError("Boundary Conditions/" + name + "/" + ambientName +
+                       " is given without a 'Heat Transfer Coefficient': give one (or drop the temperature)");
+    if (!hasCoefficient) continue;
+    const double h = readDouble(group, name, "Heat Transfer Coefficient");
+    if (h < 0.0) throw InputError("Boundary Conditions/" + name + "/Heat Transfer Coefficient must be >= 0");
+    if (!group.isParameter(ambientName))
+      throw InputError("Boundary Conditions/" + name + ": a 'Heat Transfer Coefficient' needs the '" + ambientName +
+                       "' the heat goes to");
+    if (group.isParameter("Temperature"))
+      throw InputError("Boundary Conditions/" + name + ": both a prescribed 'Temperature' and a 'Heat Transfer "
+                       "Coefficient'; give one (a held temperature is the limit h -> infinity)");
+    if (!mesh.hasBoundary(name))
+      throw InputError("Boundary Conditions/" + name + ": mesh '" + mesh.source +
+                       "' has no boundary group of that name; it has: " + mesh.boundaryNames());
+    if (h > 0.0) m_transfer.push_back({name, h, readDouble(group, name, ambientName)});
+  }
+}
+
+std::vector<ThermalBoundaryConditions::TransferEdge> ThermalBoundaryConditions::transferEdges(
+    const Mesh& mesh, const DofMap& dofMap) const {
+  std::vector<TransferEdge> edges;
+  if (m_transfer.empty()) return edges;
+  const int npc = dofMap.nodesPerCell();
+  std::unordered_set<GO> myEdges;  // an edge of one of this rank's cells: assembled here
+  for (GO c : dofMap.cells())
+    for (int a = 0; a < npc; ++a)
+      myEdges.insert(edgeKey(mesh.cell(c)[a], mesh.cell(c)[(a + 1) % npc], mesh.numNodes()));
+  for (const Transfer& t : m_transfer)
+    for (const auto& e : mesh.boundary(t.group).edges)
+      if (myEdges.count(edgeKey(e[0], e[1], mesh.numNodes())))
+        edges.push_back({{dofMap.overlapIndex(e[0]), dofMap.overlapIndex(e[1])}, t.coefficient, t.ambient});
+  return edges;
 }
 
 }  // namespace flowform

@@ -77,6 +77,8 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
     for (const auto& [node, value] : thermalConditions.prescribed())
       values.push_back({node, temperature, value});
     m_assembler->setPrescribedValues(values);
+    if (thermalConditions.hasTransfer())
+      m_assembler->setHeatTransfer(thermalConditions.transferEdges(m_mesh, *m_dofMap), temperature);
   }
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
   m_model = std::make_unique<FlowModel>(

@@ -2,7 +2,7 @@
 # with plastic heating (orders, energy balance; thermal_channel_checks.py), its adiabatic limit, a case without the
 # sublist has no temperature unknowns, and the thermal input errors (exit 2, nothing written).
 set(FLOWFORM_PYTHON /usr/bin/python3)
-foreach(what convergence adiabatic isothermal)
+foreach(what convergence adiabatic transfer isothermal)
   add_test(NAME thermal_channel_${what}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/thermal_channel_checks.py ${what}
                    $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/thermal_${what})
@@ -27,3 +27,18 @@ add_test(NAME hot_extrusion_checks
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/hot_extrusion_checks.py
                  $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/hot_extrusion)
 set_tests_properties(hot_extrusion_checks PROPERTIES LABELS "regression")
+flowform_exit_test(bad_input_heat_transfer_without_ambient CASE channel_small.xml
+  SET "Material/Thermal/Conductivity=1" "Boundary Conditions/top/Heat Transfer Coefficient=2"
+  CONTAINS "Boundary Conditions/top" "Ambient Temperature")
+flowform_exit_test(bad_input_heat_transfer_and_temperature CASE channel_small.xml
+  SET "Material/Thermal/Conductivity=1" "Boundary Conditions/top/Heat Transfer Coefficient=2"
+      "Boundary Conditions/top/Ambient Temperature=1" "Boundary Conditions/top/Temperature=1"
+  CONTAINS "Boundary Conditions/top" "both a prescribed 'Temperature' and a 'Heat Transfer Coefficient'")
+flowform_exit_test(bad_input_tool_temperature_off_a_wall CASE channel_small.xml
+  SET "Material/Thermal/Conductivity=1" "Boundary Conditions/top/Heat Transfer Coefficient=2"
+      "Boundary Conditions/top/Tool Temperature=1"
+  CONTAINS "Boundary Conditions/top/Tool Temperature" "Ambient Temperature")
+flowform_exit_test(bad_input_heat_transfer_negative CASE channel_small.xml
+  SET "Material/Thermal/Conductivity=1" "Boundary Conditions/top/Heat Transfer Coefficient=-2"
+      "Boundary Conditions/top/Ambient Temperature=1"
+  CONTAINS "Heat Transfer Coefficient")

@@ -36,11 +36,18 @@ back out at the inlet) and ρc = 100 (1 %): the relative difference falls with o
 the finest pair and is at most 1e-3 (ρc = 1) and 5e-3 (ρc = 100) at N = 32 (measured 4.4e-4 and
 2.5e-3, orders 2.0 and 2.1: the lumped mean temperature and ∫ a·∇T_h are second order).
 
+Subcommand transfer (heat transfer to the surroundings): the walls' prescribed temperature replaced
+by a Heat Transfer Coefficient h = 2 to an Ambient Temperature T_a = 1. The wall then passes the
+heat made in the half-channel, −k T'(H) = η Q(H) = h (T(H) − T_a), so the exact profile is the
+held-wall one shifted by η Q(H)/h. Asserted as in convergence: finest-pair order >= 1.8 and the
+N = 32 error at most 2e-2 of the rise (measured in docs/verification.md §19), the walls' Heat Flow
+(now ∫ h (T − T_a)) equal to the plastic heat within 1e-3.
+
 Subcommand isothermal: xml/channel.xml has 3 dofs per node (no Temperature field without
 Material/Thermal), and the same flow with the field has 4 and the same velocities to 1e-10 (the
 flow does not read T).
 
-usage: thermal_channel_checks.py {convergence|adiabatic|isothermal} FLOWFORM SOURCE_DIR OUTDIR
+usage: thermal_channel_checks.py {convergence|adiabatic|transfer|isothermal} FLOWFORM SOURCE_DIR OUTDIR
 """
 import json
 import math
@@ -88,9 +95,34 @@ def run(flowform, case, outdir, n, extra=()):
     return r
 
 
-def convergence(flowform, source, outdir):
+H_TRANSFER = 2.0
+
+
+def edited_case(source, outdir, name, wall_entry):
+    """The shipped case with each wall's '<Temperature 1>' replaced by `wall_entry` (XML lines),
+    the mesh path made absolute."""
+    with open(os.path.join(source, "xml", "thermal_channel.xml")) as f:
+        text = f.read()
+    held = '      <Parameter name="Temperature" type="double" value="1.0"/>      <!-- T_w -->\n'
+    if text.count(held) != 2:
+        raise SystemExit("xml/thermal_channel.xml no longer has the two wall temperatures this check edits")
+    text = text.replace(held, wall_entry)
+    text = text.replace('"../meshes/channel.geo"', '"' + os.path.join(source, "meshes", "channel.geo") + '"')
+    path = os.path.join(outdir, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def convergence(flowform, source, outdir, transfer=False):
     case = os.path.join(source, "xml", "thermal_channel.xml")
     y, T, _ = exact_profile()
+    if transfer:
+        case = edited_case(source, outdir, "transfer_channel.xml",
+                           f'      <Parameter name="Heat Transfer Coefficient" type="double" value="{H_TRANSFER}"/>\n'
+                           '      <Parameter name="Ambient Temperature" type="double" value="1.0"/>\n')
+        _, _, plastic_per_length = exact_profile()
+        T = T + ETA * 0.5 * plastic_per_length / H_TRANSFER  # the wall's own rise η Q(H)/h
     rise = T[0] - T_WALL
     failed, errors = 0, []
     for n in (8, 16, 32):
@@ -115,16 +147,14 @@ def convergence(flowform, source, outdir):
 
 
 def adiabatic_case(source, outdir):
-    """The shipped case with its walls insulated and the inlet held at T_w; more responses."""
-    with open(os.path.join(source, "xml", "thermal_channel.xml")) as f:
+    """The shipped case with its walls insulated and the inlet held at T_w."""
+    path = edited_case(source, outdir, "adiabatic_channel.xml", "")
+    with open(path) as f:
         text = f.read()
-    held = '      <Parameter name="Temperature" type="double" value="1.0"/>      <!-- T_w -->\n'
     inlet = '    <ParameterList name="inlet">\n      <Parameter name="Type" type="string" value="Velocity"/>\n'
-    if text.count(held) != 2 or text.count(inlet) != 1:
-        raise SystemExit("xml/thermal_channel.xml no longer has the two wall temperatures and the inlet this check edits")
-    text = text.replace(held, "").replace(inlet, inlet + held)
-    text = text.replace('"../meshes/channel.geo"', '"' + os.path.join(source, "meshes", "channel.geo") + '"')
-    path = os.path.join(outdir, "adiabatic_channel.xml")
+    if text.count(inlet) != 1:
+        raise SystemExit("xml/thermal_channel.xml no longer has the inlet this check edits")
+    text = text.replace(inlet, inlet + '      <Parameter name="Temperature" type="double" value="1.0"/>\n')
     with open(path, "w") as f:
         f.write(text)
     return path
@@ -171,7 +201,9 @@ def isothermal(flowform, source, outdir):
 def main():
     what, flowform, source, outdir = sys.argv[1:5]
     os.makedirs(outdir, exist_ok=True)
-    failed = {"convergence": convergence, "adiabatic": adiabatic, "isothermal": isothermal}[what](flowform, source, outdir)
+    checks = {"convergence": convergence, "adiabatic": adiabatic, "isothermal": isothermal,
+              "transfer": lambda *a: convergence(*a, transfer=True)}
+    failed = checks[what](flowform, source, outdir)
     return verdict(failed)
 
 

@@ -21,6 +21,7 @@
 #include "flowform/assembly/CellKernel.hpp"
 #include "flowform/assembly/EvaluationTypes.hpp"
 #include "flowform/bc/BoundaryConditions.hpp"
+#include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/contact/ContactWall.hpp"
 #include "flowform/core/TpetraTypes.hpp"
 #include "flowform/discretization/DofMap.hpp"
@@ -71,6 +72,10 @@ class Assembler {
   };
   /// Replaces the prescribed values (nodes not on this rank are skipped).
   void setPrescribedValues(const std::vector<PrescribedValue>& values);
+  /// Boundary edges that transfer heat (bc/ThermalBoundaryConditions): the rows of `component`
+  /// (the temperature) of the constrained residual gain ∫_edge N_a h (T − T_a) dΓ; the
+  /// unconstrained residual (the reactions) does not.
+  void setHeatTransfer(std::vector<ThermalBoundaryConditions::TransferEdge> edges, int component);
 
   /// F(x) on the owned map. With `applyConstraints` false, the rows of constrained nodes
   /// keep their momentum equations: at a prescribed-velocity node the entry is then the
@@ -117,6 +122,10 @@ class Assembler {
   /// The one loop over this rank's cells, for every evaluation type.
   template <typename EvalT>
   void assembleCells(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const;
+  /// The one loop over this rank's heat-transferring boundary edges, for every evaluation type
+  /// (constrained residual only: prescribed rows get nothing).
+  template <typename EvalT>
+  void assembleHeatTransfer(Workset& ws) const;
   /// The one loop over this rank's contact wall nodes, for every evaluation type.
   template <typename EvalT>
   void assembleContact(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const;
@@ -143,6 +152,8 @@ class Assembler {
   std::string m_kernelError;  ///< why m_kernels do not own every component once (empty: they do)
   std::vector<char> m_prescribedDof;                  ///< per overlap dof (empty: none prescribed)
   std::vector<std::pair<LO, double>> m_prescribedRows;  ///< owned (dof, value): rows x − value
+  std::vector<ThermalBoundaryConditions::TransferEdge> m_transferEdges;
+  int m_transferComponent = -1;
   const std::vector<ContactWall>* m_walls = nullptr;
   std::vector<WallNodeRef> m_wallNodes;
   Teuchos::RCP<Vector> m_xOverlap;   ///< scratch: x imported to the overlap map

@@ -2,9 +2,16 @@
 // (Material/Thermal; docs/theory.md §10). Any group, whatever its flow Type, may carry
 //   Temperature   T = T_b on the group's nodes (the billet's temperature at an inflow, a wall
 //                 held at its temperature)
-// and a group without one is insulated (k ∂T/∂n = 0, the energy equation's natural condition:
+//   Heat Transfer Coefficient  h ≥ 0: the heat h (T − T_a) per unit area leaves through the group
+//                 (a tool in contact, a surface to the air), with
+//   Ambient Temperature        T_a (the surroundings; on a Contact Wall its name is Tool
+//                 Temperature: the tool's)
+// and a group without either is insulated (k ∂T/∂n = 0, the energy equation's natural condition:
 // an outflow, a symmetry line). Each flow condition's validator accepts these entries
-// (declareGroupParameters); this class reads them.
+// (declareGroupParameters); this class reads them. The transfer is a boundary condition, not a
+// reaction: the assembler adds R_T[a] += ∫_edge N_a h (T − T_a) dΓ (× 2π r axisymmetric) to the
+// constrained residual only, so the unconstrained residual's temperature rows at a group's nodes
+// are the heat that leaves there (the Heat Flow response, for held and transferring groups alike).
 #pragma once
 
 #include <string>
@@ -13,6 +20,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "flowform/core/Types.hpp"
+#include "flowform/discretization/DofMap.hpp"
 #include "flowform/mesh/Mesh.hpp"
 
 namespace flowform {
@@ -35,8 +43,23 @@ class ThermalBoundaryConditions {
   /// The prescribed nodal temperatures, each node once.
   const std::vector<NodeTemperature>& prescribed() const { return m_prescribed; }
 
+  /// One boundary edge that transfers heat: its two overlap nodes, h and T_a.
+  struct TransferEdge {
+    LO nodes[2];
+    double coefficient, ambient;
+  };
+  /// The transferring edges that are an edge of one of this rank's cells (each edge once over
+  /// the ranks).
+  std::vector<TransferEdge> transferEdges(const Mesh& mesh, const DofMap& dofMap) const;
+  bool hasTransfer() const { return !m_transfer.empty(); }
+
  private:
+  struct Transfer {
+    std::string group;
+    double coefficient, ambient;
+  };
   std::vector<NodeTemperature> m_prescribed;
+  std::vector<Transfer> m_transfer;
 };
 
 }  // namespace flowform
