@@ -18,7 +18,8 @@ const Known kFriction[] = {{"Friction Coefficient", "nu", ParameterKind::Frictio
                            {"Shear Factor", "m", ParameterKind::ShearFactor}};
 
 /// The friction parameters (per wall as well), the sensitivity parameters of law `law`, the Geo Parameters.
-std::string allowedNames(const std::vector<ContactWall>& walls, int law, const GeoParameterValues& geo) {
+std::string allowedNames(const std::vector<ContactWall>& walls, int law, const GeoParameterValues& geo,
+                         const BoundaryValues& boundary = {}) {
   std::string list;
   for (const Known& k : kFriction) {
     list += std::string(list.empty() ? "" : ", ") + "'" + k.name + "'";
@@ -27,6 +28,7 @@ std::string allowedNames(const std::vector<ContactWall>& walls, int law, const G
   for (const MaterialParameterInfo& p : materialLaws()[law].parameters)
     if (p.sensitivity) list += ", '" + std::string(p.name) + "'";
   for (const auto& [name, value] : geo) list += ", 'Geo Parameter:" + name + "'";
+  for (const auto& [name, value] : boundary) list += ", 'Boundary Value:" + name + "'";
   if (walls.empty()) list += " (the friction parameters need contact walls; this case has none)";
   if (geo.empty()) list += " (a 'Geo Parameter:<name>' needs the name in Mesh/Geo Parameters; this case gives none)";
   return list;
@@ -44,7 +46,7 @@ std::string otherLawWith(const std::string& name, int law) {
 }  // namespace
 
 SensitivityParameter parseSensitivityParameter(const std::string& name, const std::vector<ContactWall>& walls,
-                                               int law, const GeoParameterValues& geo) {
+                                               int law, const GeoParameterValues& geo, const BoundaryValues& boundary) {
   const std::string where = "Sensitivity/Parameters: '" + name + "'";
   const size_t colon = name.find(':');
   const std::string base = name.substr(0, colon);
@@ -62,7 +64,27 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
         return h;
       }
     throw InputError(where + ": '" + geoName + "' is not given in Mesh/Geo Parameters (a shape parameter must be " +
-                     "set there, with the .geo's DefineConstant of that name); allowed: " + allowedNames(walls, law, geo));
+                     "set there, with the .geo's DefineConstant of that name); allowed: " + allowedNames(walls, law, geo, boundary));
+  }
+  if (base == "Boundary Value") {
+    const std::string given = colon == std::string::npos ? std::string() : name.substr(colon + 1);
+    for (const auto& [path, value] : boundary)
+      if (path == given) {
+        const size_t slash = path.rfind('/');
+        h.kind = ParameterKind::BoundaryValue;
+        h.group = path.substr(0, slash);
+        h.entry = path.substr(slash + 1);
+        h.boundaryValue = value;
+        h.relativeStep = true;
+        std::string symbol = path;
+        for (char& c : symbol)
+          if (c == ' ' || c == '/') c = '_';
+        h.symbol = symbol;
+        return h;
+      }
+    throw InputError(where + ": '" + given + "' is not a value the case's Boundary Conditions give (a group's " +
+                     "Velocity X, Velocity Y, Temperature, Heat Transfer Coefficient, Ambient or Tool Temperature, " +
+                     "not of a Rigid Inflow); allowed: " + allowedNames(walls, law, geo, boundary));
   }
   const std::vector<MaterialParameterInfo>& own = materialLaws()[law].parameters;
   for (size_t i = 0; i < own.size(); ++i)
@@ -75,7 +97,7 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
   if (h.material >= 0) {
     if (colon != std::string::npos)
       throw InputError(where + ": '" + base + "' is one value for the whole body, not per wall; allowed: " +
-                       allowedNames(walls, law, geo));
+                       allowedNames(walls, law, geo, boundary));
     return h;
   }
   const Known* known = nullptr;
@@ -85,20 +107,20 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
     const std::string other = otherLawWith(base, law);
     if (!other.empty())
       throw InputError(where + " is a parameter of material law '" + other + "', but the case's Material/Law is '" +
-                       materialLaws()[law].name + "'; allowed: " + allowedNames(walls, law, geo));
-    throw InputError(where + " is not a parameter; allowed: " + allowedNames(walls, law, geo));
+                       materialLaws()[law].name + "'; allowed: " + allowedNames(walls, law, geo, boundary));
+    throw InputError(where + " is not a parameter; allowed: " + allowedNames(walls, law, geo, boundary));
   }
   h.symbol = known->symbol;
   h.kind = known->kind;
   if (walls.empty())
     throw InputError(where + " is a friction parameter, but the case has no contact wall; allowed: " +
-                     allowedNames(walls, law, geo));
+                     allowedNames(walls, law, geo, boundary));
   if (colon != std::string::npos) {
     const std::string group = name.substr(colon + 1);
     for (size_t w = 0; w < walls.size(); ++w)
       if (walls[w].name() == group) h.wall = static_cast<int>(w);
     if (h.wall < 0)
-      throw InputError(where + ": '" + group + "' is not a contact wall; allowed: " + allowedNames(walls, law, geo));
+      throw InputError(where + ": '" + group + "' is not a contact wall; allowed: " + allowedNames(walls, law, geo, boundary));
     h.symbol += "_" + group;
   }
   bool enters = false;
@@ -111,6 +133,7 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
 
 double SensitivityParameter::finiteDifferenceStep(double s, const FlowPhysics& physics) const {
   if (isGeo()) return geoValue != 0.0 ? s * std::abs(geoValue) : s;
+  if (isBoundaryValue()) return boundaryValue != 0.0 ? s * std::abs(boundaryValue) : s;
   if (isFriction() || !relativeStep) return s;
   const double value = std::abs(physics.material.values[material]);
   return value > 0.0 ? s * value : s;
@@ -118,6 +141,7 @@ double SensitivityParameter::finiteDifferenceStep(double s, const FlowPhysics& p
 
 double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics, const std::vector<ContactWall>& walls) {
   if (h.isGeo()) return h.geoValue;
+  if (h.isBoundaryValue()) return h.boundaryValue;
   if (!h.isFriction()) return physics.material.values[h.material];
   for (size_t w = 0; w < walls.size(); ++w)
     if (h.entersWall(static_cast<int>(w), walls[w])) {
@@ -128,7 +152,7 @@ double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics,
 }
 
 void shiftParameter(const SensitivityParameter& h, double delta, FlowPhysics& physics, std::vector<ContactWall>& walls) {
-  if (h.isGeo()) return;  // a shape: the mesh moves (sensitivity/PerturbedSolve)
+  if (h.partialsFromProblem()) return;  // a shape or a condition: the problem changes (sensitivity/PerturbedSolve)
   if (!h.isFriction()) {
     physics.material.values[h.material] += delta;
     return;

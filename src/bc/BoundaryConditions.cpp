@@ -119,6 +119,12 @@ BoundaryConditions::BoundaryConditions(const Teuchos::ParameterList& bcList, con
 
 void BoundaryConditions::refreshGeometry(const Mesh& mesh) { build(mesh); }
 
+void BoundaryConditions::setGroupValue(const Mesh& mesh, const std::string& group, const std::string& entry,
+                                       double value) {
+  m_bcList.sublist(group).set(entry, value);
+  build(mesh);
+}
+
 bool BoundaryConditions::releaseHeld(const Mesh& mesh) {
   if (m_held.empty()) return false;
   for (const std::string& name : m_held) {

@@ -16,6 +16,7 @@
 #include "flowform/io/RunSummary.hpp"
 #include "flowform/io/XdmfWriter.hpp"
 #include "flowform/mesh/BoundaryCurve.hpp"
+#include "flowform/sensitivity/BoundaryValuePartials.hpp"
 #include "flowform/sensitivity/PerturbedSolve.hpp"
 
 namespace flowform {
@@ -51,7 +52,8 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   const ParameterList& own = m_problem->parameters();
   m_sensitivity = std::make_unique<Sensitivity>(own.isSublist("Sensitivity") ? &own.sublist("Sensitivity") : nullptr,
                                                 m_problem->contactWalls(), m_problem->responses(),
-                                                m_problem->physics().material.law, givenGeoParameters(own));
+                                                m_problem->physics().material.law, givenGeoParameters(own),
+                                                givenBoundaryValues(own));
   m_setupSeconds = secondsSince(start);
 }
 

@@ -11,6 +11,7 @@
 #include "flowform/estimation/RefinedRun.hpp"
 #include "flowform/estimation/TwoLevelEstimate.hpp"
 #include "flowform/responses/ResponseRegistry.hpp"
+#include "flowform/sensitivity/BoundaryValuePartials.hpp"
 #include "flowform/sensitivity/Sensitivity.hpp"
 
 namespace flowform {
@@ -166,7 +167,8 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
     list.set("Jacobian", "Converged");
     list.set("Finite Difference Check", false);
     sensitivity = std::make_unique<Sensitivity>(&list, fine.contactWalls(), fine.responses(),
-                                                fine.physics().material.law, givenGeoParameters(fine.parameters()));
+                                                fine.physics().material.law, givenGeoParameters(fine.parameters()),
+                                                givenBoundaryValues(fine.parameters()));
     const GeoPartialsSource geo = geoPartialsOf(fine);
     sensitivity->compute(model, x, fine.responses(), fine.mesh(), fine.dofMap(), fine.contactWalls(), nullptr, &geo);
     lap("sensitivities");

@@ -71,14 +71,7 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
                                                                         : makeCellKernel(FlowKernel{}, fields);
     m_assembler->setKernels(
         {flow, makeCellKernel(EnergyKernel(ThermalProperties::fromParameters(material.sublist("Thermal"))), fields)});
-    const int temperature = fields.components({"Temperature"}).front();
-    std::vector<Assembler::PrescribedValue> values;
-    const ThermalBoundaryConditions thermalConditions(bcList, m_mesh);
-    for (const auto& [node, value] : thermalConditions.prescribed())
-      values.push_back({node, temperature, value});
-    m_assembler->setPrescribedValues(values);
-    if (thermalConditions.hasTransfer())
-      m_assembler->setHeatTransfer(thermalConditions.transferEdges(m_mesh, *m_dofMap), temperature);
+    applyThermalConditions();
   }
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
   m_model = std::make_unique<FlowModel>(
@@ -95,6 +88,24 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
   if (thermal) startTemperature();
+}
+
+void Problem::applyThermalConditions() {
+  const int temperature = m_dofMap->fields().component("Temperature");
+  const ThermalBoundaryConditions conditions(m_params.sublist("Boundary Conditions"), m_mesh);
+  std::vector<Assembler::PrescribedValue> values;
+  for (const auto& [node, value] : conditions.prescribed()) values.push_back({node, temperature, value});
+  m_assembler->setPrescribedValues(values);
+  m_assembler->setHeatTransfer(conditions.transferEdges(m_mesh, *m_dofMap), temperature);
+}
+
+void Problem::shiftBoundaryValue(const std::string& group, const std::string& entry, double delta) {
+  ParameterList& list = m_params.sublist("Boundary Conditions").sublist(group);
+  const double value = list.get<double>(entry) + delta;
+  list.set(entry, value);
+  m_bcs->setGroupValue(m_mesh, group, entry, value);
+  if (m_dofMap->fields().contains("Temperature")) applyThermalConditions();
+  m_model->invalidateJacobian();
 }
 
 void Problem::startTemperature() {

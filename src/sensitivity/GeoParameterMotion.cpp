@@ -9,6 +9,7 @@
 #include "flowform/mesh/BoundaryCurve.hpp"
 #include "flowform/mesh/MeshReader.hpp"
 #include "flowform/problem/Problem.hpp"
+#include "flowform/sensitivity/BoundaryValuePartials.hpp"
 
 namespace flowform {
 
@@ -130,6 +131,7 @@ MeshPartials meshPartials(Problem& problem, const Vector& state, const std::vect
 
 GeoPartialsSource geoPartialsOf(Problem& problem) {
   return [&problem](const SensitivityParameter& h, const Vector& x) {
+    if (h.isBoundaryValue()) return boundaryValuePartials(problem, h, x);
     std::vector<std::array<double, 2>> V = geoParameterMotion(problem, h);
     MeshPartials partials = meshPartials(problem, x, V);
     partials.motion = std::move(V);

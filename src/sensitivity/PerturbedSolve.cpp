@@ -23,6 +23,7 @@ PerturbedRun solvePerturbed(Problem& problem, const SensitivityParameter& h, dou
       for (int d = 0; d < 2; ++d) shape[n][d] += baseShape[n][d] - made.coords[n][d];
     problem.moveNodes(shape);
   }
+  if (h.isBoundaryValue()) problem.shiftBoundaryValue(h.group, h.entry, delta);
   for (ContactWall& wall : walls) wall.resetChangeCounts();
   // Held scales (the default) keep the walls' μ_k and σ̄_k of the base run, the problem the
   // DDM differentiates; Recomputed takes them from the start state at h ± δ, as a solve does.
@@ -88,6 +89,7 @@ PerturbedRun solvePerturbed(Problem& problem, const SensitivityParameter& h, dou
     problem.moveNodes(shape);
   }
   if (h.isGeo()) problem.moveNodes(baseShape);
+  if (h.isBoundaryValue()) problem.shiftBoundaryValue(h.group, h.entry, -delta);
   if (inflow) problem.setRigidInflowSpeed(baseSpeed);
   for (size_t w = 0; w < walls.size(); ++w) walls[w].restore(saved[w]);
   problem.model().setPhysics(problem.physics());

@@ -33,8 +33,10 @@ static void buildValidParameters(const ValidList& valid) {
   }
   valid->set("Parameters", Teuchos::Array<std::string>(),
              "parameters h to differentiate by: Friction Coefficient (every wall's ν), Friction Coefficient:<wall>, "
-             "Shear Factor, Shear Factor:<wall>, and the sensitivity parameters of the case's Material/Law (" +
-                 materialNames + "); none: no sensitivity work");
+             "Shear Factor, Shear Factor:<wall>, the sensitivity parameters of the case's Material/Law (" +
+                 materialNames + "), Geo Parameter:<name> (a Mesh/Geo Parameters entry), Boundary Value:<group>/<entry> "
+                 "(a boundary condition's Velocity X/Y, Temperature, Heat Transfer Coefficient, Ambient or Tool "
+                 "Temperature); none: no sensitivity work");
   valid->set("Finite Difference Check", false,
              "recompute every sensitivity by central differences (two more nonlinear solves per parameter, from the "
              "converged state, each with its contact-status loop) and report the relative difference (fd_check)");
@@ -64,14 +66,15 @@ Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
 }
 
 Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls,
-                         const Responses& responses, int materialLaw, const GeoParameterValues& geo) {
+                         const Responses& responses, int materialLaw, const GeoParameterValues& geo,
+                         const BoundaryValues& boundary) {
   if (!list) return;
   std::set<std::string> seen;
   for (const std::string& given : list->get<Teuchos::Array<std::string>>("Parameters")) {
     const std::string name = trim(given);
     if (name.empty()) continue;
     if (!seen.insert(name).second) throw InputError("Sensitivity/Parameters: '" + name + "' is given twice");
-    m_parameters.push_back(parseSensitivityParameter(name, walls, materialLaw, geo));
+    m_parameters.push_back(parseSensitivityParameter(name, walls, materialLaw, geo, boundary));
     // The Tresca bound m σ̄_k/√3 uses σ̄_k held from the start of the solve (ContactWall::
     // setScales), so its dependence on the material parameters (and on q) is not in ∂R/∂h
     // or K_t: refuse rather than report a derivative that misses a full-size term.
@@ -107,10 +110,10 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
   std::map<std::string, MeshPartials> meshPartials;
   m_geoMotions.clear();
   for (const SensitivityParameter& h : m_parameters) {
-    if (!h.isGeo()) continue;
-    if (!geo) throw std::logic_error("Sensitivity::compute: a Geo Parameter without the mesh's partials");
+    if (!h.partialsFromProblem()) continue;
+    if (!geo) throw std::logic_error("Sensitivity::compute: a Geo Parameter or Boundary Value without its partials");
     MeshPartials partials = (*geo)(h, x);
-    m_geoMotions[h.name] = std::move(partials.motion);
+    if (h.isGeo()) m_geoMotions[h.name] = std::move(partials.motion);
     meshPartials[h.name] = std::move(partials);
   }
 

@@ -10,6 +10,7 @@
 #include <NOX_Observer.hpp>
 #include <NOX_Solver_LineSearchBased.H>
 #include <NOX_StatusTest_Generic.H>
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/core/NumberRange.hpp"
@@ -248,6 +249,38 @@ bool NonlinearSolver::reusedFactorSolve(Vector& x, const FlowPhysics& physics, c
   return false;
 }
 
+void NonlinearSolver::checkPredictorTemperature(Vector& x, const Vector& start, const FlowPhysics& target) const {
+  // The predictor predicts the flow with a Newtonian viscosity 1/(3γ) (a hot-working law's γ at
+  // its reference temperature), which can be orders above the flow's at its rates, and so can its
+  // plastic heating: its temperatures are a good start (the inflow's carried, the tools' pull)
+  // unless the heating threw them out of range. For a law that reads T (exp(Q/RT)), T outside
+  // (start_min / 2, 2 start_max) or not finite is put back to the start (docs/theory.md §10).
+  const DofMap& dofMap = m_model.assembler().dofMap();
+  if (!dofMap.fields().contains("Temperature") || temperatureParameter(target.material.law) < 0) return;
+  const int t = dofMap.fields().component("Temperature");
+  auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+  auto sv = start.getLocalViewHost(Tpetra::Access::ReadOnly);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo, startLo = lo, startHi = -lo;
+  for (LO n = 0; n < dofMap.numOwnedNodes(); ++n) {
+    const double v = xv(dofMap.dof(n, t), 0), s = sv(dofMap.dof(n, t), 0);
+    lo = std::isfinite(v) ? std::min(lo, v) : -std::numeric_limits<double>::infinity();
+    hi = std::max(hi, v);
+    startLo = std::min(startLo, s);
+    startHi = std::max(startHi, s);
+  }
+  const auto& comm = *dofMap.comm();
+  double local[2] = {-lo, hi}, global[2];
+  double startLocal[2] = {-startLo, startHi}, startGlobal[2];
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, local, global);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, startLocal, startGlobal);
+  lo = -global[0];
+  hi = global[1];
+  if (lo > 0.5 * -startGlobal[0] && hi < 2.0 * startGlobal[1]) return;
+  log() << "  Newtonian predictor: T in [" << lo << ", " << hi << "], out of (" << 0.5 * -startGlobal[0] << ", "
+        << 2.0 * startGlobal[1] << "): the temperature starts from its start values\n";
+  for (LO n = 0; n < dofMap.numOwnedNodes(); ++n) xv(dofMap.dof(n, t), 0) = sv(dofMap.dof(n, t), 0);
+}
+
 bool NonlinearSolver::isLinear(const FlowPhysics& physics) const {
   // A Newtonian material makes the bulk linear; the contact walls may not be (Coulomb's p⁺ and
   // sticking bound, complementarity's max): then Newton, even at n = 1.
@@ -398,6 +431,7 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
   stokes.material = newtonianPredictor(target.material);
   const Vector xStart(x, Teuchos::Copy);
   const double predictorResidual = linearSolve(x, stokes);
+  checkPredictorTemperature(x, xStart, target);
   log() << "  Newtonian predictor: |F| = " << std::scientific << std::setprecision(3) << predictorResidual
         << std::defaultfloat << "\n";
   if (!std::isfinite(predictorResidual) || !isFinite(x)) {

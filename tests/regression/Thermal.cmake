@@ -42,3 +42,11 @@ flowform_exit_test(bad_input_heat_transfer_negative CASE channel_small.xml
   SET "Material/Thermal/Conductivity=1" "Boundary Conditions/top/Heat Transfer Coefficient=-2"
       "Boundary Conditions/top/Ambient Temperature=1"
   CONTAINS "Heat Transfer Coefficient")
+# The decision: the largest ram speed for an exit temperature and a ram force (scripts/extrusion_limits.py).
+add_test(NAME extrusion_limits_checks
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/extrusion_limits_checks.py
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/extrusion_limits)
+set_tests_properties(extrusion_limits_checks PROPERTIES LABELS "regression")
+flowform_exit_test(bad_input_sensitivity_unknown_boundary_value CASE channel_small.xml
+  SET "Sensitivity/Parameters={Boundary Value:top/Temperature}"
+  CONTAINS "Boundary Value:top/Temperature" "Boundary Value:inlet/Velocity Y")

@@ -12,7 +12,11 @@ real units (docs/theory.md §10.2). What is asserted, against what flowform did 
 - the DDM on the coupled system (the Jacobian's blocks ∂R_u/∂T, ∂R_T/∂u by Sacado): dφ/dQ (the
   activation energy) of the ram force, exit temperature, ram heat and plastic power and dF/dν
   against the built-in central differences within 1e-4 (measured ≤ 6e-8); without the coupling
-  blocks the heating's feedback (6 % of the force) would be missing from the derivatives;
+  blocks the heating's feedback (6 % of the force) would be missing from the derivatives; and the
+  boundary values (Boundary Value:<group>/<entry>: the ram speed, the billet's temperature, the
+  container's heat transfer coefficient and temperature; ∂R/∂h from two assemblies, the residual
+  being affine in each) for the ram force, the exit temperature and the container's heat, within
+  1e-4 (measured ≤ 2.2e-8);
 - the energy balance: the enthalpy the product carries out, ρc Q (T̄_exit − T_in), equals
   η P − Q_ram − Σ Q_tools (the heat back through the ram face and into each tool) within 2 % of
   η P (measured 0.6 %; 2.0 % with the tools insulated). The flow loses 1.6 % of its mass at the die
@@ -30,6 +34,8 @@ from flowform_tools.checks import check, verdict
 
 T_BILLET, ETA, RHO_C = 723.0, 0.9, 2.7e-9 * 9.0e8
 TOOLS = ("container", "die_face", "die_land")
+BOUNDARY_VALUES = ("ram/Velocity X", "ram/Temperature", "container/Heat Transfer Coefficient",
+                   "container/Tool Temperature")
 
 
 def isothermal_case(source, outdir):
@@ -85,12 +91,15 @@ def main():
     failed += check(softening < 0.0, f"the heated billet's ram force {hot['ram_force']:.2f} below the isothermal "
                                      f"({softening:+.2%})")
     sensitivity = launcher.run(flowform, case, os.path.join(outdir, "sensitivity"),
-                               ["Sensitivity/Parameters={Friction Coefficient, Activation Energy}",
+                               ["Sensitivity/Parameters={Friction Coefficient, Activation Energy, " +
+                                ", ".join("Boundary Value:" + b for b in BOUNDARY_VALUES) + "}",
                                 "Sensitivity/Finite Difference Check=true"], quiet=True)
     failed += check(sensitivity.status == 0, f"the run with sensitivities exits {sensitivity.status}")
     if sensitivity.status == 0:
         fd = sensitivity.summary["fd_check"]
         pairs = [(r, "Activation Energy") for r in ("ram_force", "exit_temperature", "ram_heat", "plastic_power")]
+        pairs += [(r, "Boundary Value:" + b) for r in ("ram_force", "exit_temperature", "container_heat")
+                  for b in BOUNDARY_VALUES]
         for response, parameter in pairs + [("ram_force", "Friction Coefficient")]:
             entry = fd[response][parameter]
             failed += check(entry["rel_diff"] <= 1e-4, f"d{response}/d({parameter}): DDM {entry['ddm']:.8g}, FD "

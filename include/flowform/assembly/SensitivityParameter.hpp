@@ -11,6 +11,12 @@
 //   "Geo Parameter:<name>"              a shape parameter: a Mesh/Geo Parameters entry of the
 //                                       case's .geo (a die angle, a roll radius); it moves the
 //                                       mesh, not a coefficient (sensitivity/GeoParameterMotion)
+//   "Boundary Value:<group>/<entry>"    a value a boundary group's condition gives: Velocity X,
+//                                       Velocity Y (a ram speed), Temperature (a billet's),
+//                                       Heat Transfer Coefficient, Ambient or Tool Temperature.
+//                                       The residual is affine in each, so ∂R/∂h is the difference
+//                                       of two assemblies one unit apart (sensitivity/
+//                                       BoundaryValuePartials)
 //
 // The AD seeding with such a parameter: EvaluationTypes.hpp.
 #pragma once
@@ -27,7 +33,7 @@ namespace flowform {
 struct FlowPhysics;
 
 /// The friction parameters, one of the material law's (which: `material`), or a .geo constant.
-enum class ParameterKind { FrictionCoefficient, ShearFactor, Material, GeoParameter };
+enum class ParameterKind { FrictionCoefficient, ShearFactor, Material, GeoParameter, BoundaryValue };
 
 struct SensitivityParameter {
   std::string name;    ///< as the case gives it, e.g. "Friction Coefficient:<wall group>"
@@ -38,8 +44,14 @@ struct SensitivityParameter {
   bool relativeStep = false;  ///< the finite-difference step is relative (the law says)
   std::string geoName;        ///< a Geo Parameter: its name in Mesh/Geo Parameters
   double geoValue = 0.0;      ///< a Geo Parameter: its value in the case
+  std::string group, entry;   ///< a Boundary Value: the group and the entry of its condition
+  double boundaryValue = 0.0; ///< a Boundary Value: its value in the case
 
   bool isGeo() const { return kind == ParameterKind::GeoParameter; }
+  bool isBoundaryValue() const { return kind == ParameterKind::BoundaryValue; }
+  /// ∂R/∂h and ∂φ/∂h come from the problem (a moved mesh, a changed condition), not from the
+  /// AD seeding of a coefficient.
+  bool partialsFromProblem() const { return isGeo() || isBoundaryValue(); }
 
   bool isFriction() const { return kind == ParameterKind::FrictionCoefficient || kind == ParameterKind::ShearFactor; }
   /// Whether this parameter enters wall `w`'s law.
@@ -57,6 +69,8 @@ struct SensitivityParameter {
 
 /// The Mesh/Geo Parameters a case gives (name, value): what "Geo Parameter:<name>" may name.
 using GeoParameterValues = std::vector<std::pair<std::string, double>>;
+/// The boundary values a case gives ("<group>/<entry>", value): what "Boundary Value:..." may name.
+using BoundaryValues = std::vector<std::pair<std::string, double>>;
 
 /// Parses a name of Sensitivity/Parameters for a case with material law `law` (an index of
 /// materialLaws()) and Geo Parameters `geo`. InputError naming the allowed names (those of the
@@ -64,7 +78,8 @@ using GeoParameterValues = std::vector<std::pair<std::string, double>>;
 /// law's parameter, for a friction parameter when the case has no contact wall, when no
 /// wall's law uses it, or for a Geo Parameter the case does not give.
 SensitivityParameter parseSensitivityParameter(const std::string& name, const std::vector<ContactWall>& walls,
-                                               int law, const GeoParameterValues& geo = {});
+                                               int law, const GeoParameterValues& geo = {},
+                                               const BoundaryValues& boundary = {});
 
 /// The value of h in the case (for a friction parameter of every wall: the first using it).
 double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics, const std::vector<ContactWall>& walls);

@@ -91,6 +91,10 @@ class BoundaryConditions {
   /// straight.
   void refreshGeometry(const Mesh& mesh);
 
+  /// Sets entry `entry` (a number: Velocity X, Velocity Y, ...) of group `group`'s condition to
+  /// `value` and rebuilds the constraints (a boundary value's sensitivity and its check).
+  void setGroupValue(const Mesh& mesh, const std::string& group, const std::string& entry, double value);
+
   /// Releases the groups marked "Release After Free Surfaces" (they become traction-free, their
   /// tractions kept); false when there are none.
   bool releaseHeld(const Mesh& mesh);

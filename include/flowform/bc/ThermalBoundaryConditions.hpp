@@ -51,7 +51,6 @@ class ThermalBoundaryConditions {
   /// The transferring edges that are an edge of one of this rank's cells (each edge once over
   /// the ranks).
   std::vector<TransferEdge> transferEdges(const Mesh& mesh, const DofMap& dofMap) const;
-  bool hasTransfer() const { return !m_transfer.empty(); }
 
  private:
   struct Transfer {

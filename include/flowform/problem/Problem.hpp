@@ -120,6 +120,10 @@ class Problem {
   RigidInflowReport balanceRigidInflow(NonlinearSolver& solver, Vector& x, const FlowPhysics& physics);
   /// Sets a Rigid Inflow's speed (a finite-difference run puts the base run's back).
   void setRigidInflowSpeed(double speed);
+  /// Adds `delta` to entry `entry` of boundary group `group`'s condition (a ram speed, a billet's
+  /// temperature, a heat transfer coefficient) and rebuilds the flow's constraints and the thermal
+  /// conditions; the solution is kept (a boundary value's sensitivity and its check).
+  void shiftBoundaryValue(const std::string& group, const std::string& entry, double delta);
   /// The linearization of a Rigid Inflow's balance at the converged state, for the sensitivities
   /// (none without a rigid inflow).
   std::optional<RigidInflowLinearization> rigidInflowLinearization();
@@ -204,6 +208,9 @@ class Problem {
   /// The Temperature field's start (constructor): the law's reference temperature or the mean
   /// prescribed one, the prescribed values at their nodes.
   void startTemperature();
+  /// The thermal conditions of the case's Boundary Conditions given to the assembler: the
+  /// prescribed temperatures and the heat-transferring edges (a case with the field only).
+  void applyThermalConditions();
   /// The groups marked Release After Free Surfaces are released (BoundaryConditions::releaseHeld):
   /// the flow is re-solved and the free-surface loop goes on from the converged shape; its report
   /// continues the held loop's (FreeSurfaceReport::continueFrom).

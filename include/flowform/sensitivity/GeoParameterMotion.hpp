@@ -62,7 +62,8 @@ struct MeshPartials {
   std::vector<std::array<double, 2>> motion;  ///< V, the mesh velocity they were made along
 };
 
-/// A problem's partials of a Geo Parameter at its converged flow x (V measured, then meshPartials).
+/// A problem's partials of a Geo Parameter at its converged flow x (V measured, then meshPartials),
+/// or of a Boundary Value (sensitivity/BoundaryValuePartials.hpp).
 using GeoPartialsSource = std::function<MeshPartials(const SensitivityParameter& h, const Vector& x)>;
 /// That source for `problem` (which must outlive it).
 GeoPartialsSource geoPartialsOf(Problem& problem);

@@ -139,6 +139,9 @@ class NonlinearSolver {
   /// Whether F is linear at `physics`: a Newtonian material and contact walls that are linear
   /// (Assembler::contactIsLinear). Only then is one solve exact; otherwise Newton.
   bool isLinear(const FlowPhysics& physics) const;
+  /// After the Newtonian predictor: a Temperature field the predictor's heating threw out of
+  /// range (a law that reads T only) put back to `start`.
+  void checkPredictorTemperature(Vector& x, const Vector& start, const FlowPhysics& target) const;
 
   FlowModel& m_model;
   Teuchos::ParameterList m_params;
