@@ -53,7 +53,8 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
   m_sensitivity = std::make_unique<Sensitivity>(own.isSublist("Sensitivity") ? &own.sublist("Sensitivity") : nullptr,
                                                 m_problem->contactWalls(), m_problem->responses(),
                                                 m_problem->physics().material.law, givenGeoParameters(own),
-                                                givenBoundaryValues(own));
+                                                givenBoundaryValues(own),
+                                                m_problem->dofMap().fields().contains(kTemperatureField));
   m_setupSeconds = secondsSince(start);
 }
 

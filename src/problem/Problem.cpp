@@ -46,7 +46,7 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   const bool thermal = material.isSublist("Thermal");
   FieldRegistry fields = FieldRegistry::flow();
   if (thermal) {
-    fields.add({"Temperature", 1});
+    fields.add({kTemperatureField, 1});
   } else if (const std::string group = ThermalBoundaryConditions::firstThermalGroup(bcList); !group.empty()) {
     throw InputError("Boundary Conditions/" + group +
                      " gives a thermal condition, but the case has no temperature field: add a Material/Thermal "
@@ -91,7 +91,7 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
 }
 
 void Problem::applyThermalConditions() {
-  const int temperature = m_dofMap->fields().component("Temperature");
+  const int temperature = m_dofMap->fields().component(kTemperatureField);
   const ThermalBoundaryConditions conditions(m_params.sublist("Boundary Conditions"), m_mesh);
   std::vector<Assembler::PrescribedValue> values;
   for (const auto& [node, value] : conditions.prescribed()) values.push_back({node, temperature, value});
@@ -104,7 +104,7 @@ void Problem::shiftBoundaryValue(const std::string& group, const std::string& en
   const double value = list.get<double>(entry) + delta;
   list.set(entry, value);
   m_bcs->setGroupValue(m_mesh, group, entry, value);
-  if (m_dofMap->fields().contains("Temperature")) applyThermalConditions();
+  if (m_dofMap->fields().contains(kTemperatureField)) applyThermalConditions();
   m_model->invalidateJacobian();
 }
 
@@ -112,7 +112,7 @@ void Problem::startTemperature() {
   // Newton's start for T: the law's own Temperature (Sellars–Tegart: its reference, which also
   // sets the Newtonian predictor's γ), else the mean of the prescribed temperatures; the
   // prescribed ones at their nodes. A law at T = 0 would have exp(Q/RT) = ∞.
-  const int t = m_dofMap->fields().component("Temperature");
+  const int t = m_dofMap->fields().component(kTemperatureField);
   const ThermalBoundaryConditions conditions(m_params.sublist("Boundary Conditions"), m_mesh);
   double start = 0.0;
   if (const int p = temperatureParameter(m_physics.material.law); p >= 0) {

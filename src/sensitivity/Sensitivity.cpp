@@ -67,7 +67,7 @@ Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
 
 Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls,
                          const Responses& responses, int materialLaw, const GeoParameterValues& geo,
-                         const BoundaryValues& boundary) {
+                         const BoundaryValues& boundary, bool temperatureField) {
   if (!list) return;
   std::set<std::string> seen;
   for (const std::string& given : list->get<Teuchos::Array<std::string>>("Parameters")) {
@@ -75,6 +75,13 @@ Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<C
     if (name.empty()) continue;
     if (!seen.insert(name).second) throw InputError("Sensitivity/Parameters: '" + name + "' is given twice");
     m_parameters.push_back(parseSensitivityParameter(name, walls, materialLaw, geo, boundary));
+    // With a Temperature field the law's own temperature is only Newton's start (the field gives
+    // each cell its T): its derivative would be 0, whatever the physics.
+    if (temperatureField && m_parameters.back().kind == ParameterKind::Material &&
+        m_parameters.back().material == temperatureParameter(materialLaw))
+      throw InputError("Sensitivity/Parameters: '" + name + "' is the law's uniform temperature, which a case with "
+                       "Material/Thermal does not use (the Temperature field gives each cell its own); differentiate "
+                       "by a boundary's temperature instead, e.g. 'Boundary Value:<inflow group>/Temperature'");
     // The Tresca bound m σ̄_k/√3 uses σ̄_k held from the start of the solve (ContactWall::
     // setScales), so its dependence on the material parameters (and on q) is not in ∂R/∂h
     // or K_t: refuse rather than report a derivative that misses a full-size term.

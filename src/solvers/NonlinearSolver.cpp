@@ -256,8 +256,8 @@ void NonlinearSolver::checkPredictorTemperature(Vector& x, const Vector& start, 
   // unless the heating threw them out of range. For a law that reads T (exp(Q/RT)), T outside
   // (start_min / 2, 2 start_max) or not finite is put back to the start (docs/theory.md §10).
   const DofMap& dofMap = m_model.assembler().dofMap();
-  if (!dofMap.fields().contains("Temperature") || temperatureParameter(target.material.law) < 0) return;
-  const int t = dofMap.fields().component("Temperature");
+  const int t = dofMap.fields().componentOf(kTemperatureField);
+  if (t < 0 || temperatureParameter(target.material.law) < 0) return;
   auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
   auto sv = start.getLocalViewHost(Tpetra::Access::ReadOnly);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo, startLo = lo, startHi = -lo;

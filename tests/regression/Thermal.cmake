@@ -50,3 +50,6 @@ set_tests_properties(extrusion_limits_checks PROPERTIES LABELS "regression")
 flowform_exit_test(bad_input_sensitivity_unknown_boundary_value CASE channel_small.xml
   SET "Sensitivity/Parameters={Boundary Value:top/Temperature}"
   CONTAINS "Boundary Value:top/Temperature" "Boundary Value:inlet/Velocity Y")
+flowform_exit_test(bad_input_sensitivity_law_temperature_with_field CASE ../../../xml/hot_extrusion.xml
+  SET "Sensitivity/Parameters={Temperature}"
+  CONTAINS "Sensitivity/Parameters: 'Temperature'" "Boundary Value:")

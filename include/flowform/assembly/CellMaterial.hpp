@@ -13,8 +13,7 @@ namespace flowform {
 
 /// The Temperature component when the law of `law` reads it, else −1.
 inline int temperatureComponentFor(const DofMap& dofMap, int law) {
-  return dofMap.fields().contains("Temperature") && temperatureParameter(law) >= 0 ? dofMap.fields().component("Temperature")
-                                                                                   : -1;
+  return temperatureParameter(law) >= 0 ? dofMap.fields().componentOf(kTemperatureField) : -1;
 }
 
 /// `material` at cell k's temperature (x: the solution's workset; temperature: the component,

@@ -19,6 +19,10 @@ struct FieldDescription {
   int numComponents = 1;  ///< 2 for the velocity, 1 for a scalar
 };
 
+/// The temperature field's name: a case with Material/Thermal registers it after the flow's
+/// (docs/theory.md §10); kernels, responses and solvers look it up by this name.
+inline const std::string kTemperatureField = "Temperature";
+
 class FieldRegistry {
  public:
   /// The flow's fields: Velocity (2 components) and Pressure (1).
@@ -36,6 +40,8 @@ class FieldRegistry {
   /// Node component of component `c` of field `f` (the field's first component + c).
   int component(int f, int c = 0) const { return m_first[f] + c; }
   int component(const std::string& name, int c = 0) const { return component(find(name), c); }
+  /// The first component of the field called `name`, −1 when the case has none.
+  int componentOf(const std::string& name) const { return contains(name) ? component(name) : -1; }
   /// Components of all fields together (at a node that carries every field).
   int numComponents() const { return m_first.empty() ? 0 : m_first.back() + m_fields.back().numComponents; }
   /// The node components of the named fields, in the order given (a kernel's element vector).

@@ -24,9 +24,9 @@ namespace flowform {
 
 /// The Temperature component of the case (InputError naming `who` when it has none).
 inline int temperatureComponent(const DofMap& dofMap, const std::string& who) {
-  if (!dofMap.fields().contains("Temperature"))
-    throw InputError("Responses: " + who + " needs a temperature field: give Material/Thermal");
-  return dofMap.fields().component("Temperature");
+  const int t = dofMap.fields().componentOf(kTemperatureField);
+  if (t < 0) throw InputError("Responses: " + who + " needs a temperature field: give Material/Thermal");
+  return t;
 }
 
 struct MeanTemperature {

@@ -51,7 +51,8 @@ class Sensitivity {
   /// `materialLaw` (an index of materialLaws()) gives the material's sensitivity parameters.
   /// `geo`: the case's Mesh/Geo Parameters, which "Geo Parameter:<name>" may name.
   Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls, const Responses& responses,
-              int materialLaw, const GeoParameterValues& geo = {}, const BoundaryValues& boundary = {});
+              int materialLaw, const GeoParameterValues& geo = {}, const BoundaryValues& boundary = {},
+              bool temperatureField = false);
 
   bool requested() const { return !m_parameters.empty(); }
   const std::vector<SensitivityParameter>& parameters() const { return m_parameters; }

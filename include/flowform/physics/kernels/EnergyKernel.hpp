@@ -51,7 +51,7 @@ struct EnergyKernel {
   explicit EnergyKernel(const ThermalProperties& properties) : m_properties(properties) {}
 
   const char* name() const { return "Energy"; }
-  KernelFields fields() const { return {{"Temperature"}, {"Velocity", "Temperature"}}; }
+  KernelFields fields() const { return {{kTemperatureField}, {"Velocity", kTemperatureField}}; }
 
   template <typename Scalar, typename PScalar>
   void evaluate(const CellContext<PScalar>& c, const Scalar* values, Scalar* residual) const {

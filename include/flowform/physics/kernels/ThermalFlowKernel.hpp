@@ -11,6 +11,7 @@
 #pragma once
 
 #include "flowform/discretization/ElementLayout.hpp"
+#include "flowform/discretization/FieldRegistry.hpp"
 #include "flowform/discretization/ShapeFunctions.hpp"
 #include "flowform/physics/FlowResidual.hpp"
 #include "flowform/physics/Material.hpp"
@@ -33,7 +34,7 @@ struct ThermalFlowKernel {
   static constexpr bool kUsesStressDual = true;
 
   const char* name() const { return "Flow (temperature-dependent law)"; }
-  KernelFields fields() const { return {{"Velocity", "Pressure"}, {"Velocity", "Pressure", "Temperature"}}; }
+  KernelFields fields() const { return {{"Velocity", "Pressure"}, {"Velocity", "Pressure", kTemperatureField}}; }
 
   template <typename Scalar, typename PScalar>
   void evaluate(const CellContext<PScalar>& c, const Scalar* values, Scalar* residual) const {
