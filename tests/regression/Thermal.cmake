@@ -53,3 +53,9 @@ flowform_exit_test(bad_input_sensitivity_unknown_boundary_value CASE channel_sma
 flowform_exit_test(bad_input_sensitivity_law_temperature_with_field CASE ../../../xml/hot_extrusion.xml
   SET "Sensitivity/Parameters={Temperature}"
   CONTAINS "Sensitivity/Parameters: 'Temperature'" "Boundary Value:")
+# The round bar (xml/hot_extrusion_axisym.xml): the same checks (the balance's bound 4 %: see the script).
+add_test(NAME hot_extrusion_axisym_checks
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/hot_extrusion_checks.py
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/hot_extrusion_axisym
+                 hot_extrusion_axisym.xml)
+set_tests_properties(hot_extrusion_axisym_checks PROPERTIES LABELS "regression")
