@@ -232,8 +232,10 @@ void Assembler::residual(const Vector& xOwned, Vector& fOwned, bool applyConstra
     assembleCells<ResidualEval>(ws, nullptr, applyConstraints);
     addTractions(ws, applyConstraints);
     if (m_walls) assembleContact<ResidualEval>(ws, nullptr, applyConstraints);
-    if (applyConstraints) assembleHeatTransfer<ResidualEval>(ws);
-    if (applyConstraints) addConstraintRows(ws.x, ws);
+    if (applyConstraints) {
+      assembleHeatTransfer<ResidualEval>(ws);
+      addConstraintRows(ws.x, ws);
+    }
   }
   fOwned.putScalar(0.0);
   fOwned.doExport(*m_fOverlap, *m_dofMap.exporter(), Tpetra::ADD);

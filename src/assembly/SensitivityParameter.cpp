@@ -17,9 +17,10 @@ struct Known {
 const Known kFriction[] = {{"Friction Coefficient", "nu", ParameterKind::FrictionCoefficient},
                            {"Shear Factor", "m", ParameterKind::ShearFactor}};
 
-/// The friction parameters (per wall as well), the sensitivity parameters of law `law`, the Geo Parameters.
+/// The friction parameters (per wall as well), the sensitivity parameters of law `law`, the Geo
+/// Parameters, the Boundary Values.
 std::string allowedNames(const std::vector<ContactWall>& walls, int law, const GeoParameterValues& geo,
-                         const BoundaryValues& boundary = {}) {
+                         const BoundaryValues& boundary) {
   std::string list;
   for (const Known& k : kFriction) {
     list += std::string(list.empty() ? "" : ", ") + "'" + k.name + "'";

@@ -1,11 +1,12 @@
 #include "flowform/bc/BoundaryConditions.hpp"
-#include "flowform/bc/ThermalBoundaryConditions.hpp"
 
 #include <cmath>
 #include <sstream>
 #include <unordered_set>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "flowform/bc/ThermalBoundaryConditions.hpp"
 
 #include "flowform/mesh/BoundaryCurve.hpp"
 #include "flowform/core/InputError.hpp"
@@ -75,8 +76,6 @@ NodeConstraint reduceConditions(const std::vector<LinearCondition>& conds, const
   return nc;
 }
 
-GO edgeKey(GO a, GO b, GO numNodes) { return std::min(a, b) * numNodes + std::max(a, b); }
-
 }  // namespace
 
 static void buildValidGroupParameters(const ValidList& valid) {
@@ -115,6 +114,19 @@ BoundaryConditions::BoundaryConditions(const Teuchos::ParameterList& bcList, con
                                        const DofMap& dofMap)
     : m_bcList(bcList), m_dofMap(dofMap) {
   build(mesh);
+}
+
+RankEdges::RankEdges(const Mesh& mesh, const DofMap& dofMap) : m_numNodes(mesh.numNodes()) {
+  const int npc = nodesPerCell(mesh.cellType);
+  for (GO c : dofMap.cells())
+    for (int a = 0; a < npc; ++a) {
+      const GO i = mesh.cell(c)[a], j = mesh.cell(c)[(a + 1) % npc];
+      m_keys.insert(std::min(i, j) * m_numNodes + std::max(i, j));
+    }
+}
+
+bool RankEdges::contains(const std::array<GO, 2>& e) const {
+  return m_keys.count(std::min(e[0], e[1]) * m_numNodes + std::max(e[0], e[1])) > 0;
 }
 
 void BoundaryConditions::refreshGeometry(const Mesh& mesh) { build(mesh); }
@@ -244,15 +256,11 @@ void BoundaryConditions::build(const Mesh& mesh) {
 
   // Traction edges: those that are an edge of one of this rank's cells.
   if (!tractionGroups.empty()) {
-    const int npc = nodesPerCell(mesh.cellType);
-    std::unordered_set<GO> myEdges;
-    for (GO c : dofMap.cells())
-      for (int a = 0; a < npc; ++a)
-        myEdges.insert(edgeKey(mesh.cell(c)[a], mesh.cell(c)[(a + 1) % npc], mesh.numNodes()));
+    const RankEdges myEdges(mesh, dofMap);
     for (const auto& [bg, t] : tractionGroups) {
       if (t[0] == 0.0 && t[1] == 0.0) continue;  // free: nothing to assemble
       for (const auto& e : bg->edges)
-        if (myEdges.count(edgeKey(e[0], e[1], mesh.numNodes())))
+        if (myEdges.contains(e))
           m_tractionEdges.push_back({{dofMap.overlapIndex(e[0]), dofMap.overlapIndex(e[1])}, {t[0], t[1]}});
     }
   }

@@ -1,17 +1,17 @@
 #include "flowform/bc/ThermalBoundaryConditions.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
-#include <unordered_set>
 
+#include "flowform/bc/BoundaryConditions.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/NumberRange.hpp"
 
 namespace flowform {
 
 namespace {
+
 constexpr const char* kThermalEntries[] = {"Temperature", "Heat Transfer Coefficient", "Ambient Temperature",
                                            "Tool Temperature"};
 
@@ -27,8 +27,7 @@ double readDouble(const Teuchos::ParameterList& group, const std::string& groupN
   return v;
 }
 
-GO edgeKey(GO a, GO b, GO numNodes) { return std::min(a, b) * numNodes + std::max(a, b); }
-}
+}  // namespace
 
 void ThermalBoundaryConditions::declareGroupParameters(Teuchos::ParameterList& valid) {
   valid.set("Temperature", 0.0,
@@ -113,14 +112,10 @@ std::vector<ThermalBoundaryConditions::TransferEdge> ThermalBoundaryConditions::
     const Mesh& mesh, const DofMap& dofMap) const {
   std::vector<TransferEdge> edges;
   if (m_transfer.empty()) return edges;
-  const int npc = dofMap.nodesPerCell();
-  std::unordered_set<GO> myEdges;  // an edge of one of this rank's cells: assembled here
-  for (GO c : dofMap.cells())
-    for (int a = 0; a < npc; ++a)
-      myEdges.insert(edgeKey(mesh.cell(c)[a], mesh.cell(c)[(a + 1) % npc], mesh.numNodes()));
+  const RankEdges myEdges(mesh, dofMap);  // an edge of one of this rank's cells: assembled here
   for (const Transfer& t : m_transfer)
     for (const auto& e : mesh.boundary(t.group).edges)
-      if (myEdges.count(edgeKey(e[0], e[1], mesh.numNodes())))
+      if (myEdges.contains(e))
         edges.push_back({{dofMap.overlapIndex(e[0]), dofMap.overlapIndex(e[1])}, t.coefficient, t.ambient});
   return edges;
 }

@@ -10,9 +10,9 @@
 #include <Teuchos_SerialDenseSolver.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
+#include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/contact/ToolCorners.hpp"
 #include "flowform/core/InputError.hpp"
-#include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/core/NumberRange.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/core/ValidList.hpp"

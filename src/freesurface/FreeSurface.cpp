@@ -1,4 +1,3 @@
-#include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/freesurface/FreeSurface.hpp"
 
 #include <algorithm>
@@ -8,6 +7,7 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
+#include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/mesh/BoundaryCurve.hpp"
 #include "flowform/core/ValidList.hpp"

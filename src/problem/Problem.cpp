@@ -9,8 +9,6 @@
 #include "flowform/physics/kernels/EnergyKernel.hpp"
 #include "flowform/physics/kernels/FlowKernel.hpp"
 #include "flowform/physics/kernels/ThermalFlowKernel.hpp"
-#include "flowform/responses/HeatFlow.hpp"
-#include "flowform/responses/TemperatureResponses.hpp"
 #include "flowform/solvers/LinearSolverRegistry.hpp"
 
 namespace flowform {
@@ -52,26 +50,19 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
                      " gives a thermal condition, but the case has no temperature field: add a Material/Thermal "
                      "sublist (Conductivity, Density, Specific Heat, Heat Fraction) or drop the entry");
   }
-  if (!thermal) {
-    const ParameterList& responses = m_params.sublist("Responses");
-    for (auto it = responses.begin(); it != responses.end(); ++it)
-      if (responses.isSublist(responses.name(it)) && responses.sublist(responses.name(it)).isType<std::string>("Type"))
-        for (const char* type : {HeatFlow::kName, MeanTemperature::kName, MaximumTemperature::kName})
-          if (responses.sublist(responses.name(it)).get<std::string>("Type") == type)
-            throw InputError("Responses/" + responses.name(it) + ": a " + type +
-                             " response needs a temperature field: add a Material/Thermal sublist");
-  }
+  m_responses->checkTemperatureField(thermal);
   m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings, fields);
   m_bcs = std::make_unique<BoundaryConditions>(bcList, m_mesh, *m_dofMap);
   m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
   m_assembler->setPhysics(m_physics);
+  std::optional<ThermalBoundaryConditions> thermalConditions;
   if (thermal) {
     // A law with a temperature (Sellars–Tegart) reads the field: the flow kernel that does.
     const auto flow = temperatureParameter(m_physics.material.law) >= 0 ? makeCellKernel(ThermalFlowKernel{}, fields)
                                                                         : makeCellKernel(FlowKernel{}, fields);
     m_assembler->setKernels(
         {flow, makeCellKernel(EnergyKernel(ThermalProperties::fromParameters(material.sublist("Thermal"))), fields)});
-    applyThermalConditions();
+    thermalConditions.emplace(applyThermalConditions());
   }
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
   m_model = std::make_unique<FlowModel>(
@@ -87,16 +78,17 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
                      ": 'Release After Free Surfaces' needs free surfaces, and the case has none");
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
-  if (thermal) startTemperature();
+  if (thermalConditions) startTemperature(*thermalConditions);
 }
 
-void Problem::applyThermalConditions() {
+ThermalBoundaryConditions Problem::applyThermalConditions() {
   const int temperature = m_dofMap->fields().component(kTemperatureField);
-  const ThermalBoundaryConditions conditions(m_params.sublist("Boundary Conditions"), m_mesh);
+  ThermalBoundaryConditions conditions(m_params.sublist("Boundary Conditions"), m_mesh);
   std::vector<Assembler::PrescribedValue> values;
   for (const auto& [node, value] : conditions.prescribed()) values.push_back({node, temperature, value});
   m_assembler->setPrescribedValues(values);
   m_assembler->setHeatTransfer(conditions.transferEdges(m_mesh, *m_dofMap), temperature);
+  return conditions;
 }
 
 void Problem::shiftBoundaryValue(const std::string& group, const std::string& entry, double delta) {
@@ -108,12 +100,11 @@ void Problem::shiftBoundaryValue(const std::string& group, const std::string& en
   m_model->invalidateJacobian();
 }
 
-void Problem::startTemperature() {
+void Problem::startTemperature(const ThermalBoundaryConditions& conditions) {
   // Newton's start for T: the law's own Temperature (Sellars–Tegart: its reference, which also
   // sets the Newtonian predictor's γ), else the mean of the prescribed temperatures; the
   // prescribed ones at their nodes. A law at T = 0 would have exp(Q/RT) = ∞.
   const int t = m_dofMap->fields().component(kTemperatureField);
-  const ThermalBoundaryConditions conditions(m_params.sublist("Boundary Conditions"), m_mesh);
   double start = 0.0;
   if (const int p = temperatureParameter(m_physics.material.law); p >= 0) {
     start = m_physics.material.values[p];

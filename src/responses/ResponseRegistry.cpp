@@ -37,10 +37,17 @@ class RegisteredResponse final : public ResponseFunction {
   T m_response;
 };
 
+/// T::kNeedsTemperature where a type declares it (the temperature field's responses), else false.
+template <typename T, typename = void>
+struct NeedsTemperature : std::false_type {};
+template <typename T>
+struct NeedsTemperature<T, std::void_t<decltype(T::kNeedsTemperature)>> : std::bool_constant<T::kNeedsTemperature> {};
+
 template <typename... Types>
 std::vector<ResponseTypeInfo> collect(ResponseList<Types...>) {
   return {ResponseTypeInfo{Types::kName, Types::kDescription, Types::kNeedsBoundary, Types::kNeedsWall,
-                           Types::kReactionBased, Types::kAdaptivityTarget, Types::kDifferentiable}...};
+                           Types::kReactionBased, Types::kAdaptivityTarget, Types::kDifferentiable,
+                           NeedsTemperature<Types>::value}...};
 }
 
 }  // namespace

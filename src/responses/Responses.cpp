@@ -50,6 +50,14 @@ void Responses::checkWalls(const std::vector<ContactWall>& walls) const {
   }
 }
 
+void Responses::checkTemperatureField(bool temperatureField) const {
+  if (temperatureField) return;
+  for (const Response& r : m_responses)
+    if (responseTypes()[r.type].needsTemperature)
+      throw InputError("Responses/" + r.name + ": a " + responseTypes()[r.type].name +
+                       " response needs a temperature field: add a Material/Thermal sublist");
+}
+
 bool Responses::reactionWeights(const std::string& name, const Mesh& mesh, const DofMap& dofMap, Geometry geometry,
                                 Vector& c) const {
   for (const Response& r : m_responses)

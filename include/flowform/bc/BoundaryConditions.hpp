@@ -21,6 +21,7 @@
 #include <array>
 #include <map>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
@@ -30,6 +31,18 @@
 #include "flowform/core/Types.hpp"
 
 namespace flowform {
+
+/// The edges of this rank's cells, for the boundary terms assembled edge by edge (tractions, heat
+/// transfer): a boundary edge has one cell, so each is assembled once over the ranks.
+class RankEdges {
+ public:
+  RankEdges(const Mesh& mesh, const DofMap& dofMap);
+  bool contains(const std::array<GO, 2>& edge) const;
+
+ private:
+  GO m_numNodes;
+  std::unordered_set<GO> m_keys;  ///< min(a, b) × numNodes + max(a, b)
+};
 
 struct NodeConstraint {
   enum class Kind { None, Single, Full };

@@ -29,11 +29,13 @@ class ThermalBoundaryConditions {
  public:
   /// Adds the thermal entries to a boundary group's valid list.
   static void declareGroupParameters(Teuchos::ParameterList& valid);
-  /// Whether any group of `bcList` gives a thermal entry.
+  /// The first group of `bcList` that gives a thermal entry ("" when none does).
   static std::string firstThermalGroup(const Teuchos::ParameterList& bcList);
 
-  /// Reads the groups of `bcList` (the case's Boundary Conditions). Throws InputError when two
-  /// groups prescribe different temperatures at a shared node.
+  /// Reads the groups of `bcList` (the case's Boundary Conditions). InputError when two groups
+  /// prescribe different temperatures at a shared node, a coefficient lacks its temperature (or
+  /// the reverse), a group names the other kind's temperature (Ambient on a wall, Tool off one),
+  /// or a group holds its Temperature and transfers heat too.
   ThermalBoundaryConditions(const Teuchos::ParameterList& bcList, const Mesh& mesh);
 
   struct NodeTemperature {

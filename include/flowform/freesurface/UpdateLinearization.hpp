@@ -8,8 +8,9 @@
 // contact wall's nodes), the interior following by the harmonic extension E (factored once);
 // with a Rigid Inflow in the state, its speed follows the unknowns (Y_j += dU_j g). U_q and φ_q
 // along a direction are central differences in q. The flow part uses the factors of K_t at the
-// state (one back-substitution per unknown); contact statuses and penalty scales are held. Used by the total shape derivative (ShapeDerivative)
-// and by the Newton step on the positions of the free-surface loop.
+// state (one back-substitution per unknown); contact statuses and penalty scales are held. Used
+// by the total shape derivative (ShapeDerivative) and by the Newton step on the positions of the
+// free-surface loop.
 #pragma once
 
 #include <array>
@@ -43,8 +44,8 @@ struct SurfaceLinearizationState {
   std::function<void(const std::vector<std::array<double, 2>>&)> moveNodes;
   /// A Rigid Inflow whose speed U the flow's response carries (the total shape derivative; empty
   /// for the loop's own Newton step, which holds U): its force F from the unconstrained residual
-  /// (on the current mesh), −∂f/∂U, and dF along dq at the state. Then Y_j = y_j + dU_j g with K g = −∂f/∂U and
-  /// dU_j = −(∂F/∂b_j + dF(y_j)) / dF(g), the bordered system of docs/rolling.md.
+  /// (on the current mesh), −∂f/∂U, and dF along dq at the state. Then Y_j = y_j + dU_j g with
+  /// K g = −∂f/∂U and dU_j = −(∂F/∂b_j + dF(y_j)) / dF(g), the bordered system of docs/rolling.md.
   std::function<double(const Vector&)> inflowForce{};
   Teuchos::RCP<const Vector> minusDfDU{};
   std::function<double(const Vector&)> inflowForceTangent{};

@@ -2,7 +2,7 @@
 // gets a Temperature field, coupled to the flow in one Newton (physics/kernels/EnergyKernel.hpp,
 // docs/theory.md §10); a case without it has no temperature unknowns at all.
 //
-//   k   Conductivity     [power / (length · temperature)]   e.g. W/(mm K) with mm, s, MPa
+//   k   Conductivity     [power / (length · temperature)]   mW/(mm K) = N/(s K) with mm, s, MPa
 //   ρ   Density          [mass / volume]
 //   c   Specific Heat    [energy / (mass · temperature)]
 //   η   Heat Fraction    the share of the plastic power σ:D that heats the metal (0.9–1)

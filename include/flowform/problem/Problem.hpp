@@ -27,6 +27,7 @@
 #include "flowform/assembly/Assembler.hpp"
 #include "flowform/responses/Responses.hpp"
 #include "flowform/bc/BoundaryConditions.hpp"
+#include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/contact/ContactWall.hpp"
 #include "flowform/discretization/DofMap.hpp"
 #include "flowform/freesurface/FreeSurface.hpp"
@@ -206,11 +207,12 @@ class Problem {
   /// Penalty scales of every wall from the state x.
   void updateWallScales(const Vector& x);
   /// The Temperature field's start (constructor): the law's reference temperature or the mean
-  /// prescribed one, the prescribed values at their nodes.
-  void startTemperature();
+  /// prescribed one, the prescribed values (of `conditions`) at their nodes.
+  void startTemperature(const ThermalBoundaryConditions& conditions);
   /// The thermal conditions of the case's Boundary Conditions given to the assembler: the
-  /// prescribed temperatures and the heat-transferring edges (a case with the field only).
-  void applyThermalConditions();
+  /// prescribed temperatures and the heat-transferring edges (a case with the field only);
+  /// returned for the field's start.
+  ThermalBoundaryConditions applyThermalConditions();
   /// The groups marked Release After Free Surfaces are released (BoundaryConditions::releaseHeld):
   /// the flow is re-solved and the free-surface loop goes on from the converged shape; its report
   /// continues the held loop's (FreeSurfaceReport::continueFrom).

@@ -24,7 +24,7 @@ struct HeatFlow {
       "the heat leaving the workpiece by conduction through a group held at a prescribed Temperature (the "
       "temperature rows' reactions, negated); needs Material/Thermal";
   static constexpr bool kNeedsBoundary = true, kNeedsWall = false, kReactionBased = true, kAdaptivityTarget = false,
-                        kDifferentiable = true;
+                        kDifferentiable = true, kNeedsTemperature = true;
 
   static void declareParameters(Teuchos::ParameterList& list) {
     declareBoundary(list, "the group held at its temperature");
@@ -34,16 +34,12 @@ struct HeatFlow {
   template <typename Scalar>
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
     const int t = temperatureComponent(c.dofMap, "the Heat Flow through '" + m_boundary + "'");
+    const BoundaryCurve curve = buildBoundaryCurve(c.mesh, c.mesh.boundary(m_boundary));
     Scalar local = 0.0;
-    std::vector<char> seen(c.mesh.numNodes(), 0);
-    for (const auto& edge : c.mesh.boundary(m_boundary).edges)
-      for (GO node : edge) {
-        if (seen[node]) continue;
-        seen[node] = 1;
-        const LO n = c.dofMap.overlapIndex(node);
-        if (!c.dofMap.ownsNode(n)) continue;  // each node once, by its owner
-        local -= c.u(c.reactions, n, t);
-      }
+    for (GO node : curve.nodes) {
+      const LO n = c.dofMap.overlapIndex(node);
+      if (c.dofMap.ownsNode(n)) local -= c.u(c.reactions, n, t);  // each node once, by its owner
+    }
     return sumOverRanks(*c.dofMap.comm(), local);
   }
 

@@ -26,8 +26,8 @@
 #include "flowform/responses/CellPowers.hpp"
 #include "flowform/responses/ContactLength.hpp"
 #include "flowform/responses/FlowRate.hpp"
-#include "flowform/responses/HeatFlow.hpp"
 #include "flowform/responses/ForwardSlip.hpp"
+#include "flowform/responses/HeatFlow.hpp"
 #include "flowform/responses/MeanPressure.hpp"
 #include "flowform/responses/NeutralAngle.hpp"
 #include "flowform/responses/ShearAngle.hpp"
@@ -54,6 +54,7 @@ using RegisteredResponses =
 struct ResponseTypeInfo {
   std::string name, description;
   bool needsBoundary, needsWall, reactionBased, adaptivityTarget, differentiable;
+  bool needsTemperature;  ///< reads the Temperature field (a type's optional kNeedsTemperature)
 };
 const std::vector<ResponseTypeInfo>& responseTypes();
 /// Index of the type called `name`, −1 when there is none.

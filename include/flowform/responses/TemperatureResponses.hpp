@@ -6,8 +6,8 @@
 //                        temperature; an inflow's T̄ is its own.
 //   Maximum Temperature  the largest nodal temperature (no derivative: the node that holds it may
 //                        change with a parameter).
-// Each needs the field: evaluating one in a case without it is an InputError (Problem refuses it
-// before the solve).
+// Each needs the field (kNeedsTemperature): a case without it is refused before the solve
+// (Responses::checkTemperatureField).
 #pragma once
 
 #include <algorithm>
@@ -35,7 +35,7 @@ struct MeanTemperature {
       "the flux-weighted (mixing-cup) temperature of the material crossing the group: integral of T u.n over "
       "integral of u.n; needs Material/Thermal";
   static constexpr bool kNeedsBoundary = true, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
-                        kDifferentiable = true;
+                        kDifferentiable = true, kNeedsTemperature = true;
 
   static void declareParameters(Teuchos::ParameterList& list) {
     declareBoundary(list, "the group the material crosses (the product's outlet)");
@@ -66,7 +66,7 @@ struct MaximumTemperature {
   static constexpr const char* kName = "Maximum Temperature";
   static constexpr const char* kDescription = "the largest nodal temperature (no derivative); needs Material/Thermal";
   static constexpr bool kNeedsBoundary = false, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
-                        kDifferentiable = false;
+                        kDifferentiable = false, kNeedsTemperature = true;
 
   static void declareParameters(Teuchos::ParameterList&) {}
   explicit MaximumTemperature(const Teuchos::ParameterList&) {}

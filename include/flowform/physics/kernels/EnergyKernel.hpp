@@ -88,8 +88,6 @@ struct EnergyKernel {
     }
   }
 
-  const ThermalProperties& properties() const { return m_properties; }
-
  private:
   ThermalProperties m_properties;
 };
