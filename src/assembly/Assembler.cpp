@@ -105,6 +105,11 @@ void Assembler::setPrescribedValues(const std::vector<PrescribedValue>& values) 
   }
 }
 
+void Assembler::setFrictionHeat(std::vector<double> fractions, int component) {
+  m_frictionHeat = std::move(fractions);
+  m_frictionHeatComponent = component;
+}
+
 void Assembler::setHeatTransfer(std::vector<ThermalBoundaryConditions::TransferEdge> edges, int component) {
   m_transferEdges = std::move(edges);
   m_transferComponent = component;
@@ -142,9 +147,9 @@ void Assembler::assembleCells(Workset& ws, const SensitivityParameter* h, bool a
 
 template <typename EvalT>
 void Assembler::assembleContact(Workset& ws, const SensitivityParameter* h, bool applyConstraints) const {
-  // A wall node's rows are its two momentum rows; its stencil is the wall's (nodeStencil:
-  // u_x, u_y of the node, the pressures of its previous neighbour, itself and its next one,
-  // the neighbours' velocities).
+  // A wall node's rows are its two momentum rows, and its temperature row where the wall's
+  // friction heats the workpiece; its stencil is the wall's (nodeStencil: u_x, u_y of the node,
+  // the pressures of its previous neighbour, itself and its next one, the neighbours' velocities).
   constexpr int N = ContactWall::kNodeStencilSize;
   using Scalar = typename EvalT::template Scalar<N>;
   using PScalar = typename EvalT::ParamScalar;
@@ -161,6 +166,15 @@ void Assembler::assembleContact(Workset& ws, const SensitivityParameter* h, bool
     (*m_walls)[r.wall].addNodeResidual(r.k, friction[r.wall], values, R, dual);
     if (applyConstraints) applyConstraintRows(constraints[r.node], R);
     scatter(ws, dofs, ContactWall::kNodeRows, dofs, N, R);
+    if (m_frictionHeat.empty() || m_frictionHeat[r.wall] == 0.0) continue;
+    // Friction heat: R_T[k] −= β g_k (u_k − v_w)·t_k (g_k the law's force along t_k, which has
+    // the slip's sign: the node's friction power, ≥ 0). A held temperature's row is the owner's T − T_b.
+    const LO t = m_dofMap.dof(r.node, m_frictionHeatComponent);
+    if (applyConstraints && !m_prescribedDof.empty() && m_prescribedDof[t]) continue;
+    const ContactWall& wall = (*m_walls)[r.wall];
+    Scalar heat = -m_frictionHeat[r.wall] * wall.tangentialForce(r.k, friction[r.wall], values) *
+                  wall.relativeSlip(r.k, values);
+    scatter(ws, &t, 1, dofs, N, &heat);
   }
 }
 

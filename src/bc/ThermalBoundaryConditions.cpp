@@ -13,7 +13,7 @@ namespace flowform {
 namespace {
 
 constexpr const char* kThermalEntries[] = {"Temperature", "Heat Transfer Coefficient", "Ambient Temperature",
-                                           "Tool Temperature"};
+                                           "Tool Temperature", "Friction Heat Fraction"};
 
 bool isContactWall(const Teuchos::ParameterList& group) {
   return group.isType<std::string>("Type") && group.get<std::string>("Type") == "Contact Wall";
@@ -42,6 +42,10 @@ void ThermalBoundaryConditions::declareGroupParameters(Teuchos::ParameterList& v
             finiteNumber());
   valid.set("Tool Temperature", 0.0, "T_a of the Heat Transfer Coefficient on a Contact Wall: the tool's temperature",
             finiteNumber());
+  valid.set("Friction Heat Fraction", 0.0,
+            "beta in [0, 1], a Contact Wall's: the share of its friction power |g (u - v_w).t| that heats the "
+            "workpiece at the wall's nodes (the rest goes into the tool); a case with Material/Thermal only",
+            inRange(0.0, 1.0));
 }
 
 std::string ThermalBoundaryConditions::firstThermalGroup(const Teuchos::ParameterList& bcList) {
@@ -92,6 +96,14 @@ ThermalBoundaryConditions::ThermalBoundaryConditions(const Teuchos::ParameterLis
     if (group.isParameter(ambientName) && !hasCoefficient)
       throw InputError("Boundary Conditions/" + name + "/" + ambientName +
                        " is given without a 'Heat Transfer Coefficient': give one (or drop the temperature)");
+    if (group.isParameter("Friction Heat Fraction")) {
+      const double beta = readDouble(group, name, "Friction Heat Fraction");
+      if (!wall)
+        throw InputError("Boundary Conditions/" + name + "/Friction Heat Fraction: only a Contact Wall has friction");
+      if (beta < 0.0 || beta > 1.0)
+        throw InputError("Boundary Conditions/" + name + "/Friction Heat Fraction must lie in [0, 1]");
+      if (beta > 0.0) m_frictionHeat[name] = beta;
+    }
     if (!hasCoefficient) continue;
     const double h = readDouble(group, name, "Heat Transfer Coefficient");
     if (h < 0.0) throw InputError("Boundary Conditions/" + name + "/Heat Transfer Coefficient must be >= 0");
@@ -106,6 +118,11 @@ ThermalBoundaryConditions::ThermalBoundaryConditions(const Teuchos::ParameterLis
                        "' has no boundary group of that name; it has: " + mesh.boundaryNames());
     if (h > 0.0) m_transfer.push_back({name, h, readDouble(group, name, ambientName)});
   }
+}
+
+double ThermalBoundaryConditions::frictionHeatFraction(const std::string& wall) const {
+  const auto it = m_frictionHeat.find(wall);
+  return it == m_frictionHeat.end() ? 0.0 : it->second;
 }
 
 std::vector<ThermalBoundaryConditions::TransferEdge> ThermalBoundaryConditions::transferEdges(

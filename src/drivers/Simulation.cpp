@@ -16,6 +16,7 @@
 #include "flowform/io/RunSummary.hpp"
 #include "flowform/io/XdmfWriter.hpp"
 #include "flowform/mesh/BoundaryCurve.hpp"
+#include "flowform/problem/EnergyBalance.hpp"
 #include "flowform/sensitivity/BoundaryValuePartials.hpp"
 #include "flowform/sensitivity/PerturbedSolve.hpp"
 
@@ -164,6 +165,10 @@ void Simulation::writeOutput(const std::string& outDir) const {
   const ParameterList& output = parameters().sublist("Output");
   const Mesh& mesh = m_problem->mesh();
   const FieldSet fields = gatherFields();
+  // Where the heat goes (a case with a Temperature field; problem/EnergyBalance.hpp): on every
+  // rank, its sums are collective.
+  nlohmann::json extra = m_extraSummary;
+  if (m_problem->dofMap().fields().contains(kTemperatureField)) energyBalance(*m_problem).report(extra);
   if (m_comm->getRank() != 0) return;
   ResultSet result(outDir);  // written whole, then put in place (io/ResultDirectory.hpp)
   const std::string& dir = result.stagingPath();
@@ -189,7 +194,7 @@ void Simulation::writeOutput(const std::string& outDir) const {
   record.setupSeconds = m_setupSeconds;
   record.solveSeconds = m_solveSeconds;
   record.sensitivitySeconds = m_sensitivitySeconds;
-  record.extra = &m_extraSummary;
+  record.extra = &extra;
   writeJsonFile(dir + "/summary.json", runSummary(*m_problem, record, start));
   result.publish();
 }

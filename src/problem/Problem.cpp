@@ -1,5 +1,7 @@
 #include "flowform/problem/Problem.hpp"
 
+#include <algorithm>
+
 #include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/contact/ToolCorners.hpp"
 #include "flowform/contact/WallStates.hpp"
@@ -88,6 +90,11 @@ ThermalBoundaryConditions Problem::applyThermalConditions() {
   for (const auto& [node, value] : conditions.prescribed()) values.push_back({node, temperature, value});
   m_assembler->setPrescribedValues(values);
   m_assembler->setHeatTransfer(conditions.transferEdges(m_mesh, *m_dofMap), temperature);
+  std::vector<double> frictionHeat;  // β per wall, in the walls' order; empty when no wall heats
+  for (const ContactWall& wall : m_walls) frictionHeat.push_back(conditions.frictionHeatFraction(wall.name()));
+  if (std::all_of(frictionHeat.begin(), frictionHeat.end(), [](double beta) { return beta == 0.0; }))
+    frictionHeat.clear();
+  m_assembler->setFrictionHeat(frictionHeat, temperature);
   return conditions;
 }
 

@@ -4,6 +4,8 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
@@ -12,6 +14,23 @@
 namespace flowform {
 
 namespace {
+
+/// T::kNeedsTemperature where a type declares it (the temperature field's responses), else false.
+template <typename T, typename = void>
+struct NeedsTemperature : std::false_type {};
+template <typename T>
+struct NeedsTemperature<T, std::void_t<decltype(T::kNeedsTemperature)>> : std::bool_constant<T::kNeedsTemperature> {};
+
+/// Whether T has the optional instance members readsTemperature() and checkMesh(mesh).
+template <typename T, typename = void>
+struct HasReadsTemperature : std::false_type {};
+template <typename T>
+struct HasReadsTemperature<T, std::void_t<decltype(std::declval<const T&>().readsTemperature())>> : std::true_type {};
+template <typename T, typename = void>
+struct HasCheckMesh : std::false_type {};
+template <typename T>
+struct HasCheckMesh<T, std::void_t<decltype(std::declval<const T&>().checkMesh(std::declval<const Mesh&>()))>>
+    : std::true_type {};
 
 template <typename T>
 class RegisteredResponse final : public ResponseFunction {
@@ -32,16 +51,17 @@ class RegisteredResponse final : public ResponseFunction {
       return false;
     }
   }
+  bool readsTemperature() const override {
+    if constexpr (HasReadsTemperature<T>::value) return m_response.readsTemperature();
+    else return NeedsTemperature<T>::value;
+  }
+  void checkMesh(const Mesh& mesh) const override {
+    if constexpr (HasCheckMesh<T>::value) m_response.checkMesh(mesh);
+  }
 
  private:
   T m_response;
 };
-
-/// T::kNeedsTemperature where a type declares it (the temperature field's responses), else false.
-template <typename T, typename = void>
-struct NeedsTemperature : std::false_type {};
-template <typename T>
-struct NeedsTemperature<T, std::void_t<decltype(T::kNeedsTemperature)>> : std::bool_constant<T::kNeedsTemperature> {};
 
 template <typename... Types>
 std::vector<ResponseTypeInfo> collect(ResponseList<Types...>) {

@@ -43,6 +43,16 @@ const ContactWall& wallNamed(const std::vector<ContactWall>& walls, const std::s
   return *wall;
 }
 
+Workset vectorReader(const Vector& x, const Vector* dx) {
+  Workset ws;
+  ws.x = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+  if (dx) {
+    ws.dx = dx->getLocalViewHost(Tpetra::Access::ReadOnly);
+    ws.hasDirection = true;
+  }
+  return ws;
+}
+
 template <typename Scalar>
 void cellIntegrals(const Workset& x, const Mesh& mesh, const DofMap& dofMap, const FlowPhysics& physics,
                    const MaterialParameters<Scalar>& material, double deadSpeed, Scalar& plasticPower,

@@ -27,11 +27,13 @@ Responses::Responses(const Teuchos::ParameterList& list, const Mesh& mesh) {
     if (responseTypes()[type].needsBoundary && !mesh.hasBoundary(boundary))
       throw InputError("Responses/" + name + "/Boundary: mesh '" + mesh.source + "' has no boundary group '" +
                        boundary + "'; it has: " + mesh.boundaryNames());
-    const std::string exitBoundary = r.get<std::string>("Exit Boundary");
-    if (responseTypes()[type].name == ForwardSlip::kName && !mesh.hasBoundary(exitBoundary))
-      throw InputError("Responses/" + name + "/Exit Boundary: mesh '" + mesh.source + "' has no boundary group '" +
-                       exitBoundary + "'; it has: " + mesh.boundaryNames());
-    m_responses.push_back({name, boundary, type, makeResponse(type, r)});
+    auto function = makeResponse(type, r);
+    try {
+      function->checkMesh(mesh);
+    } catch (const InputError& e) {
+      throw InputError("Responses/" + name + "/" + e.what());
+    }
+    m_responses.push_back({name, boundary, type, function});
   }
 }
 
@@ -53,7 +55,7 @@ void Responses::checkWalls(const std::vector<ContactWall>& walls) const {
 void Responses::checkTemperatureField(bool temperatureField) const {
   if (temperatureField) return;
   for (const Response& r : m_responses)
-    if (responseTypes()[r.type].needsTemperature)
+    if (r.function->readsTemperature())
       throw InputError("Responses/" + r.name + ": a " + responseTypes()[r.type].name +
                        " response needs a temperature field: add a Material/Thermal sublist");
 }
@@ -64,21 +66,6 @@ bool Responses::reactionWeights(const std::string& name, const Mesh& mesh, const
     if (r.name == name && r.function->reactionWeights(mesh, dofMap, geometry, c)) return true;
   return false;
 }
-
-namespace {
-
-/// A workset that reads `x` (and the direction `dx`) on their own map.
-Workset reader(const Vector& x, const Vector* dx) {
-  Workset ws;
-  ws.x = x.getLocalViewHost(Tpetra::Access::ReadOnly);
-  if (dx) {
-    ws.dx = dx->getLocalViewHost(Tpetra::Access::ReadOnly);
-    ws.hasDirection = true;
-  }
-  return ws;
-}
-
-}  // namespace
 
 template <typename Scalar>
 std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const Vector* dxOwned,
@@ -97,8 +84,8 @@ std::map<std::string, Scalar> Responses::evaluateAs(const Vector& xOwned, const 
   if (tangent) assembler.tangent(xOwned, dxOwned, h, dReactions, false);
   xOverlap.doImport(xOwned, *dofMap.importer(), Tpetra::INSERT);
   if (dxOwned) dxOverlap.doImport(*dxOwned, *dofMap.importer(), Tpetra::INSERT);
-  const Workset R = reader(givenReactions ? *givenReactions : reactions, tangent ? &dReactions : nullptr);  // owned dofs: the overlap's first ones
-  const Workset x = reader(xOverlap, dxOwned ? &dxOverlap : nullptr);
+  const Workset R = vectorReader(givenReactions ? *givenReactions : reactions, tangent ? &dReactions : nullptr);  // owned dofs: the overlap's first ones
+  const Workset x = vectorReader(xOverlap, dxOwned ? &dxOverlap : nullptr);
   const MaterialParameters<Scalar> material = materialFor<Scalar>(assembler.physics().material, h);
   const ResponseContext<Scalar> context{x, R, mesh, dofMap, assembler.physics(), material, walls, h};
 

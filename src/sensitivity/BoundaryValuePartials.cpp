@@ -6,7 +6,8 @@ namespace flowform {
 
 BoundaryValues givenBoundaryValues(const Teuchos::ParameterList& caseParams) {
   static const char* const kEntries[] = {"Velocity X",          "Velocity Y",          "Temperature",
-                                         "Heat Transfer Coefficient", "Ambient Temperature", "Tool Temperature"};
+                                         "Heat Transfer Coefficient", "Ambient Temperature", "Tool Temperature",
+                                         "Friction Heat Fraction"};
   BoundaryValues values;
   if (!caseParams.isSublist("Boundary Conditions")) return values;
   const Teuchos::ParameterList& bcList = caseParams.sublist("Boundary Conditions");
@@ -28,13 +29,21 @@ MeshPartials boundaryValuePartials(Problem& problem, const SensitivityParameter&
   MeshPartials out;
   Vector base(x.getMap()), shifted(x.getMap());
   const Assembler& assembler = problem.model().assembler();
+  // The residual is affine in h, so any step Δ gives ∂R/∂h exactly: 1, or for a fraction (β in
+  // [0, 1]) half a unit towards the inside of its range.
+  const double value = problem.parameters().sublist("Boundary Conditions").sublist(h.group).get<double>(h.entry);
+  const double step = h.entry == "Friction Heat Fraction" ? (value <= 0.5 ? 0.5 : -0.5) : 1.0;
+  // The responses too: a reaction sum reads the unconstrained residual, which a Friction Heat
+  // Fraction enters (the other entries only the constrained one: there ∂φ/∂h = 0).
   assembler.residual(x, base);
-  problem.shiftBoundaryValue(h.group, h.entry, 1.0);
+  const auto phiBase = problem.evaluateResponses(x);
+  problem.shiftBoundaryValue(h.group, h.entry, step);
   assembler.residual(x, shifted);
-  problem.shiftBoundaryValue(h.group, h.entry, -1.0);
+  const auto phiShifted = problem.evaluateResponses(x);
+  problem.shiftBoundaryValue(h.group, h.entry, -step);
   out.dRdh = Teuchos::rcp(new Vector(x.getMap()));
-  out.dRdh->update(1.0, shifted, -1.0, base, 0.0);
-  for (const std::string& name : problem.responses().names()) out.dPhidh[name] = 0.0;
+  out.dRdh->update(1.0 / step, shifted, -1.0 / step, base, 0.0);
+  for (const auto& [name, value] : phiShifted) out.dPhidh[name] = (value - phiBase.at(name)) / step;
   return out;
 }
 

@@ -36,7 +36,7 @@ static void buildValidParameters(const ValidList& valid) {
              "Shear Factor, Shear Factor:<wall>, the sensitivity parameters of the case's Material/Law (" +
                  materialNames + "), Geo Parameter:<name> (a Mesh/Geo Parameters entry), Boundary Value:<group>/<entry> "
                  "(a boundary condition's Velocity X/Y, Temperature, Heat Transfer Coefficient, Ambient or Tool "
-                 "Temperature); none: no sensitivity work");
+                 "Temperature, Friction Heat Fraction); none: no sensitivity work");
   valid->set("Finite Difference Check", false,
              "recompute every sensitivity by central differences (two more nonlinear solves per parameter, from the "
              "converged state, each with its contact-status loop) and report the relative difference (fd_check)");

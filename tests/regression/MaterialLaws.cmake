@@ -7,6 +7,11 @@ add_test(NAME material_sellars_tegart_sensitivity
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/sensitivity_checks.py sellars-tegart
                  $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/material/sellars_tegart --step 5e-5)
 set_tests_properties(material_sellars_tegart_sensitivity PROPERTIES LABELS "regression" TIMEOUT 300)
+# The Hensel-Spittel law (xml/channel_hensel_spittel.xml): its eleven parameters, DDM against FD.
+add_test(NAME material_hensel_spittel_sensitivity
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/sensitivity_checks.py hensel-spittel
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/material/hensel_spittel)
+set_tests_properties(material_hensel_spittel_sensitivity PROPERTIES LABELS "regression" TIMEOUT 300)
 # The checker can fail: with δ = 5 % of each parameter the truncation error is far above 1e-5.
 add_test(NAME material_sellars_tegart_coarse_step_fails
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/sensitivity_checks.py sellars-tegart

@@ -53,9 +53,23 @@ flowform_exit_test(bad_input_sensitivity_unknown_boundary_value CASE channel_sma
 flowform_exit_test(bad_input_sensitivity_law_temperature_with_field CASE ../../../xml/hot_extrusion.xml
   SET "Sensitivity/Parameters={Temperature}"
   CONTAINS "Sensitivity/Parameters: 'Temperature'" "Boundary Value:")
-# The round bar (xml/hot_extrusion_axisym.xml): the same checks (the balance's bound 4 %: see the script).
+# The round bar (xml/hot_extrusion_axisym.xml): the same checks.
 add_test(NAME hot_extrusion_axisym_checks
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/hot_extrusion_checks.py
                  $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/hot_extrusion_axisym
                  hot_extrusion_axisym.xml)
 set_tests_properties(hot_extrusion_axisym_checks PROPERTIES LABELS "regression")
+# A thermocouple (Point Value) off the mesh, or reading a temperature the case does not have; a
+# friction heat fraction off a contact wall, or without the temperature field.
+flowform_exit_test(bad_input_point_value_outside_mesh CASE channel_small.xml
+  SET "Responses/probe/Type=Point Value" "Responses/probe/Field=Pressure" "Responses/probe/X=100"
+  CONTAINS "Responses/probe/X, Y" "lies outside mesh")
+flowform_exit_test(bad_input_point_value_temperature_without_field CASE channel_small.xml
+  SET "Responses/probe/Type=Point Value" "Responses/probe/X=0.5" "Responses/probe/Y=0.5"
+  CONTAINS "Responses/probe" "needs a temperature field")
+flowform_exit_test(bad_input_friction_heat_off_a_wall CASE channel_small.xml
+  SET "Material/Thermal/Conductivity=1" "Boundary Conditions/top/Friction Heat Fraction=0.5"
+  CONTAINS "Boundary Conditions/top/Friction Heat Fraction" "only a Contact Wall")
+flowform_exit_test(bad_input_friction_heat_without_field CASE channel_small.xml
+  SET "Boundary Conditions/top/Friction Heat Fraction=0.5"
+  CONTAINS "Boundary Conditions/top" "no temperature field")

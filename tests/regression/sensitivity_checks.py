@@ -24,6 +24,9 @@ subcommands
               (1e-8). Q and T move ln Z by (Q/(R T)) δ = 24.9 δ, so their truncation is ~600× that of
               a step δ in the other parameters: measured 4.1e-6 (Q, velocity) at δ = 2e-4, hence
               5e-5 (~2.6e-7 by δ², the others ≤ 2e-7; the solver error grows 4× to ≲ 1e-9).
+  hensel-spittel  xml/channel_hensel_spittel.xml (every term of the law on): du/dh and
+              dp/dh for its eleven parameters by DDM vs the built-in central differences < 1e-5
+              (relative steps); ε A |d/dA| = |d/dm7| (1e-8: σ̄ depends on A and m7 only through A e^(m7 ε)).
   shape       shape parameters ("Geo Parameter:<name>", docs/sensitivity.md §10): the extrusion's die
               opening `exit` and land length `Le` (dF/dh by DDM on the mesh moved along V = dX/dh
               vs the built-in central differences, the .geo meshed again at h ± δ): |difference|
@@ -215,6 +218,33 @@ def sellars_tegart(args, c):
     c.check(want <= names, f"solution.h5 has {sorted(want)}")
 
 
+HS_PARAMETERS = ["A", "m1", "m2", "m3", "m4", "m5", "m7", "m8", "m9", "Strain", "Temperature"]
+
+
+def hensel_spittel(args, c):
+    case = os.path.join(args.source, "xml", "channel_hensel_spittel.xml")
+    out = os.path.join(args.work, "hensel_spittel")
+    names = HS_PARAMETERS
+    s = run(args.flowform, case, out,
+            ["Sensitivity/Parameters={" + ", ".join(names) + "}", "Sensitivity/Finite Difference Check=true",
+             f"Sensitivity/Finite Difference Step={args.step}"])
+    c.check(s["parameters"]["Material"]["Law"] == "Hensel-Spittel", "the case runs the Hensel-Spittel law")
+    sens = s["sensitivity"]
+    c.check(sens["factorizations"] == 1 and sens["solves"] == len(names),
+            f"one factorization, one back-substitution per parameter ({sens['factorizations']}, {sens['solves']})")
+    for field in ["velocity_field", "pressure_field"]:
+        for p in names:
+            e = s["fd_check"][field][p]
+            c.check(not e["one_sided"] and e["rel_diff"] < TOL,
+                    f"{field} d/d{p}: |DDM| {e['ddm']:.6g}, |FD| {e['fd']:.6g}, rel. difference {e['rel_diff']:.3e} < {TOL}")
+        # σ̄ ∝ A and ∝ e^(m7 ε): ∂R/∂m7 = ε A ∂R/∂A exactly, so ε A |d/dA| = |d/dm7| (one factorization:
+        # round-off of the back-substitution, 1e-8 as for Sellars-Tegart's Q and T).
+        a, m7 = s["fd_check"][field]["A"]["ddm"], s["fd_check"][field]["m7"]["ddm"]
+        eps, big_a = s["parameters"]["Material"]["Strain"], s["parameters"]["Material"]["A"]
+        c.check(abs(eps * big_a * a - m7) <= 1e-8 * abs(m7), f"{field}: eps A |d/dA| = {eps * big_a * a:.12g} = "
+                                                             f"|d/dm7| = {m7:.12g}")
+
+
 def no_work(args, c):
     case = os.path.join(args.source, "xml", "channel.xml")
     base = run(args.flowform, case, os.path.join(args.work, "none"), [])
@@ -271,6 +301,7 @@ def shape(args, c):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("subcommand", choices=["channel", "extrusion", "external", "one-sided", "sellars-tegart",
+                                                       "hensel-spittel",
                                                        "no-work", "shape"])
     parser.add_argument("flowform")
     parser.add_argument("source")
@@ -283,7 +314,7 @@ def main():
     os.makedirs(args.work, exist_ok=True)
     c = Checker()
     {"channel": channel, "extrusion": extrusion, "external": external, "one-sided": one_sided,
-     "sellars-tegart": sellars_tegart, "no-work": no_work,
+     "sellars-tegart": sellars_tegart, "hensel-spittel": hensel_spittel, "no-work": no_work,
      "shape": shape}[args.subcommand](args, c)
     print("FAILED" if c.failed else "PASSED")
     return 1 if c.failed else 0

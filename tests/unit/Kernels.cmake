@@ -3,6 +3,7 @@
 flowform_unit_test(MaterialTest unit/MaterialTest.cpp)
 # The Sellars–Tegart law and the material-law registry.
 flowform_unit_test(SellarsTegartTest unit/SellarsTegartTest.cpp)
+flowform_unit_test(HenselSpittelTest unit/HenselSpittelTest.cpp)
 flowform_unit_test(FlowKernelTest unit/FlowKernelTest.cpp)
 flowform_unit_test(FlowKernelDerivativeTest unit/FlowKernelDerivativeTest.cpp)
 flowform_unit_test(AssemblyTest unit/AssemblyTest.cpp)

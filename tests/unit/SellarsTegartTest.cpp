@@ -149,7 +149,7 @@ TEUCHOS_UNIT_TEST(SellarsTegart, DerivativeWrtParametersMatchesFd) {
 
 TEUCHOS_UNIT_TEST(MaterialLaws, Registry) {
   const auto& laws = flowform::materialLaws();
-  TEST_EQUALITY_CONST(laws.size(), 2u);
+  TEST_EQUALITY_CONST(laws.size(), 3u);
   TEST_EQUALITY(laws[0].name, std::string("Power Law"));  // the default, first
   TEST_EQUALITY(laws[kLaw].name, std::string("Sellars-Tegart"));
   TEST_EQUALITY(flowform::materialLawIndex("Sellars-Tegart"), kLaw);

@@ -76,6 +76,10 @@ class Assembler {
   /// (the temperature) of the constrained residual gain ∫_edge N_a h (T − T_a) dΓ; the
   /// unconstrained residual (the reactions) does not.
   void setHeatTransfer(std::vector<ThermalBoundaryConditions::TransferEdge> edges, int component);
+  /// Friction heat (bc/ThermalBoundaryConditions): β per contact wall (the walls' order; empty:
+  /// none); the row of `component` (the temperature) of each wall node gains −β g_k (u_k − v_w)·t_k,
+  /// the share of the node's friction power that heats the workpiece, in both residuals.
+  void setFrictionHeat(std::vector<double> fractions, int component);
 
   /// F(x) on the owned map. With `applyConstraints` false, the rows of constrained nodes
   /// keep their momentum equations: at a prescribed-velocity node the entry is then the
@@ -153,6 +157,8 @@ class Assembler {
   std::vector<char> m_prescribedDof;                  ///< per overlap dof (empty: none prescribed)
   std::vector<std::pair<LO, double>> m_prescribedRows;  ///< owned (dof, value): rows x − value
   std::vector<ThermalBoundaryConditions::TransferEdge> m_transferEdges;
+  std::vector<double> m_frictionHeat;  ///< β per wall (empty: no friction heat)
+  int m_frictionHeatComponent = -1;
   int m_transferComponent = -1;
   const std::vector<ContactWall>* m_walls = nullptr;
   std::vector<WallNodeRef> m_wallNodes;

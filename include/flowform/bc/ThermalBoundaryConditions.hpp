@@ -6,6 +6,9 @@
 //                 (a tool in contact, a surface to the air), with
 //   Ambient Temperature        T_a (the surroundings; on a Contact Wall its name is Tool
 //                 Temperature: the tool's)
+//   Friction Heat Fraction     β ∈ [0, 1], on a Contact Wall only: the share of the friction
+//                 power g (u − v_w)·t at each wall node that heats the workpiece there (the
+//                 assembler adds R_T[k] −= β g_k (u_k − v_w)·t_k; the rest goes into the tool)
 // and a group without either is insulated (k ∂T/∂n = 0, the energy equation's natural condition:
 // an outflow, a symmetry line). Each flow condition's validator accepts these entries
 // (declareGroupParameters); this class reads them. The transfer is a boundary condition, not a
@@ -14,6 +17,7 @@
 // are the heat that leaves there (the Heat Flow response, for held and transferring groups alike).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -53,6 +57,8 @@ class ThermalBoundaryConditions {
   /// The transferring edges that are an edge of one of this rank's cells (each edge once over
   /// the ranks).
   std::vector<TransferEdge> transferEdges(const Mesh& mesh, const DofMap& dofMap) const;
+  /// β of the contact wall called `wall` (0 when it gives none).
+  double frictionHeatFraction(const std::string& wall) const;
 
  private:
   struct Transfer {
@@ -61,6 +67,7 @@ class ThermalBoundaryConditions {
   };
   std::vector<NodeTemperature> m_prescribed;
   std::vector<Transfer> m_transfer;
+  std::map<std::string, double> m_frictionHeat;  ///< wall -> β > 0
 };
 
 }  // namespace flowform

@@ -29,6 +29,12 @@ struct ForwardSlip {
   explicit ForwardSlip(const Teuchos::ParameterList& p)
       : m_wall(p.get<std::string>("Boundary")), m_exit(p.get<std::string>("Exit Boundary")) {}
 
+  void checkMesh(const Mesh& mesh) const {
+    if (!mesh.hasBoundary(m_exit))
+      throw InputError("Exit Boundary: mesh '" + mesh.source + "' has no boundary group '" + m_exit +
+                       "'; it has: " + mesh.boundaryNames());
+  }
+
   template <typename Scalar>
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
     const ContactWall& wall = wallNamed(c.walls, m_wall);

@@ -47,6 +47,9 @@ struct ResponseContext {
   Scalar u(const Workset& ws, LO n, int field) const { return at(ws, dofMap.dof(n, field)); }
 };
 
+/// A workset that reads `x` (and the direction `dx`) on their own map.
+Workset vectorReader(const Vector& x, const Vector* dx = nullptr);
+
 /// Σ over the ranks (the derivative summed with the value).
 double sumOverRanks(const Comm& comm, double local);
 TangentFad sumOverRanks(const Comm& comm, const TangentFad& local);

@@ -13,6 +13,12 @@
 //                     (reactionWeights): its adjoint gives the adaptive loop's indicators
 //   kDifferentiable   it has a derivative (evaluate<TangentFad>); false for the piecewise
 //                     constant ones (Dead Zone, Contact Length), which have evaluate(double) only
+//   kNeedsTemperature (optional, false when absent) it reads the Temperature field
+// and, optionally, members of an instance:
+//   bool readsTemperature() const      the same, when the parameters decide (Point Value's Field)
+//   void checkMesh(const Mesh&) const  refuses, before the solve, parameters the mesh cannot
+//                                      serve (InputError naming the entry; Responses prefixes
+//                                      "Responses/<name>/")
 #pragma once
 
 #include <memory>
@@ -30,6 +36,7 @@
 #include "flowform/responses/HeatFlow.hpp"
 #include "flowform/responses/MeanPressure.hpp"
 #include "flowform/responses/NeutralAngle.hpp"
+#include "flowform/responses/PointValue.hpp"
 #include "flowform/responses/ShearAngle.hpp"
 #include "flowform/responses/TemperatureResponses.hpp"
 #include "flowform/responses/ThicknessRatio.hpp"
@@ -48,7 +55,7 @@ using RegisteredResponses =
     ResponseList<BoundaryForce, MeanPressure, BoundaryPower, FlowRate, PlasticPower, FrictionPower, PenaltyPower,
                  StabilizationPower, DeadZone, BoundaryExtent, WallGap, ContactLength, WallForce, ThicknessRatio,
                  ShearAngle, ToolPower, ToolTorque, NeutralAngle, ForwardSlip, HeatFlow,
-                 MeanTemperature, MaximumTemperature>;
+                 MeanTemperature, MaximumTemperature, PointValue>;
 
 /// A type's static facts, by its index in RegisteredResponses.
 struct ResponseTypeInfo {
@@ -76,6 +83,10 @@ class ResponseFunction {
   /// φ = c·R_unc(x): writes c (owned map, zeroed first) and returns true for an adaptivity
   /// target; false (c untouched) for the others.
   virtual bool reactionWeights(const Mesh& mesh, const DofMap& dofMap, Geometry geometry, Vector& c) const = 0;
+  /// Whether this response reads the Temperature field.
+  virtual bool readsTemperature() const = 0;
+  /// The type's checkMesh where it has one.
+  virtual void checkMesh(const Mesh& mesh) const = 0;
 };
 
 /// Declares the entries of response type `type` (an index of responseTypes()) into `list`:

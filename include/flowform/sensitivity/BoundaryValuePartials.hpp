@@ -22,10 +22,12 @@ class Problem;
 
 /// The entries of the case's Boundary Conditions that "Boundary Value:<group>/<entry>" may name:
 /// Velocity X, Velocity Y (not of a Rigid Inflow group, whose speed is an unknown), Temperature,
-/// Heat Transfer Coefficient, Ambient Temperature, Tool Temperature, as numbers the case gives.
+/// Heat Transfer Coefficient, Ambient Temperature, Tool Temperature, Friction Heat Fraction, as numbers
+/// the case gives (the residual is affine in each).
 BoundaryValues givenBoundaryValues(const Teuchos::ParameterList& caseParams);
 
-/// ∂R/∂h at x by the two assemblies above (the condition put back after); ∂φ/∂h = 0.
+/// ∂R/∂h and ∂φ/∂h at x by two assemblies and response evaluations, at h and h + Δ (the condition
+/// put back after): exact, the residual being affine in h.
 MeshPartials boundaryValuePartials(Problem& problem, const SensitivityParameter& h, const Vector& x);
 
 }  // namespace flowform

@@ -14,7 +14,7 @@
 namespace flowform {
 
 /// Parameters a law may declare (the registry checks each law against it).
-inline constexpr int kMaxMaterialParameters = 6;
+inline constexpr int kMaxMaterialParameters = 11;
 
 /// A law (its index in materialLaws()), its parameters in its declared order, and the
 /// shared strain-rate cutoff e0.

@@ -13,6 +13,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "flowform/core/TypeList.hpp"
+#include "flowform/physics/materials/HenselSpittel.hpp"
 #include "flowform/physics/materials/PowerLaw.hpp"
 #include "flowform/physics/materials/SellarsTegart.hpp"
 
@@ -22,7 +23,7 @@ template <typename... Laws>
 using MaterialLawList = TypeList<Laws...>;
 
 /// The first is the default of Material/Law.
-using RegisteredMaterialLaws = MaterialLawList<PowerLaw, SellarsTegart>;
+using RegisteredMaterialLaws = MaterialLawList<PowerLaw, SellarsTegart, HenselSpittel>;
 
 /// A law's static facts, by its index in RegisteredMaterialLaws.
 struct MaterialLawInfo {

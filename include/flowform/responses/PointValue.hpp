@@ -1,0 +1,79 @@
+// Point Value: one field of the solution at a point of the material (a thermocouple, a
+// pressure tap, a velocity probe),
+//   φ = Σ_a N_a(x) q_a,
+// the finite-element interpolant of the field's nodal values q_a in the cell that holds x
+// (PointLocator: P1 barycentric or Q1 bilinear values). The point is fixed in space: when a
+// free surface or a Geo Parameter moves the mesh, the cell and the N_a(x) follow the nodes, so a
+// total derivative through the moving surface counts the interpolant's motion too.
+//
+// `Field` is a component of the case's unknowns: Velocity X, Velocity Y, Pressure, Temperature
+// (that one only with Material/Thermal: readsTemperature). A point outside the mesh is refused
+// before the solve (checkMesh); one that a moving surface leaves outside is an error at evaluation.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/NumberRange.hpp"
+#include "flowform/mesh/PointLocator.hpp"
+#include "flowform/responses/ResponseContext.hpp"
+
+namespace flowform {
+
+struct PointValue {
+  static constexpr const char* kName = "Point Value";
+  static constexpr const char* kDescription =
+      "the interpolated value of one Field (Velocity X, Velocity Y, Pressure, Temperature) at the point (X, Y): a "
+      "thermocouple, a pressure tap";
+  static constexpr bool kNeedsBoundary = false, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
+                        kDifferentiable = true;
+
+  static void declareParameters(Teuchos::ParameterList& list) {
+    list.set("Field", "Temperature",
+             "Point Value: the component read (Temperature needs Material/Thermal)",
+             Teuchos::rcp(new Teuchos::StringValidator(
+                 Teuchos::tuple<std::string>("Velocity X", "Velocity Y", "Pressure", kTemperatureField))));
+    list.set("X", 0.0, "Point Value: x (r when axisymmetric) of the point, in the mesh's units", finiteNumber());
+    list.set("Y", 0.0, "Point Value: y (z when axisymmetric) of the point, in the mesh's units", finiteNumber());
+  }
+  explicit PointValue(const Teuchos::ParameterList& p)
+      : m_field(p.get<std::string>("Field")), m_point{p.get<double>("X"), p.get<double>("Y")} {}
+
+  bool readsTemperature() const { return m_field == kTemperatureField; }
+
+  /// Refuses a point that no cell of the (initial) mesh holds.
+  void checkMesh(const Mesh& mesh) const {
+    if (!PointLocator(mesh).locate(m_point).inside)
+      throw InputError("X, Y: the point (" + std::to_string(m_point[0]) + ", " + std::to_string(m_point[1]) +
+                       ") lies outside mesh '" + mesh.source + "'");
+  }
+
+  template <typename Scalar>
+  Scalar evaluate(const ResponseContext<Scalar>& c) const {
+    const int component = m_field == "Velocity X"   ? kUx
+                          : m_field == "Velocity Y" ? kUy
+                          : m_field == "Pressure"   ? kP
+                                                    : c.dofMap.fields().componentOf(kTemperatureField);
+    if (component < 0) throw InputError("Responses: a Point Value of " + m_field + " needs Material/Thermal");
+    const CellPoint at = PointLocator(c.mesh).locate(m_point);
+    if (!at.inside)
+      throw std::runtime_error("Point Value: the point (" + std::to_string(m_point[0]) + ", " +
+                               std::to_string(m_point[1]) + ") has left the moved mesh");
+    const GO* nodes = c.mesh.cell(at.cell);
+    Scalar local = 0.0;
+    for (int a = 0; a < nodesPerCell(c.mesh.cellType); ++a) {
+      const LO n = c.dofMap.overlapIndex(nodes[a]);
+      if (c.dofMap.ownsNode(n)) local += at.weights[a] * c.u(c.x, n, component);  // each node by its owner
+    }
+    return sumOverRanks(*c.dofMap.comm(), local);
+  }
+
+ private:
+  std::string m_field;
+  std::array<double, 2> m_point;
+};
+
+}  // namespace flowform

@@ -1,0 +1,172 @@
+#include "flowform/problem/EnergyBalance.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "flowform/assembly/CellMaterial.hpp"
+#include "flowform/physics/ThermalProperties.hpp"
+#include "flowform/problem/Problem.hpp"
+#include "flowform/responses/FlowRate.hpp"
+#include "flowform/responses/HeatFlow.hpp"
+#include "flowform/responses/WallPowers.hpp"
+
+namespace flowform {
+
+namespace {
+
+/// C = ∫ ρc u·∇T dΩ over this rank's cells, on the kernels' quadrature (EnergyKernel's Galerkin
+/// convection term tested with Σ_a N_a = 1).
+double convectedHeat(const Workset& x, const Mesh& mesh, const DofMap& dofMap, Geometry geometry, double rhoC) {
+  const int components[3] = {kUx, kUy, dofMap.fields().component(kTemperatureField)};
+  const int npc = dofMap.nodesPerCell();
+  CellGeometry g;
+  LO dofs[3 * kMaxNodesPerCell];
+  double values[3 * kMaxNodesPerCell];
+  double local = 0.0;
+  for (size_t k = 0; k < dofMap.cells().size(); ++k) {
+    computeCellGeometry(mesh, dofMap.cells()[k], geometry, g);
+    dofMap.cellDofs(k, components, 3, dofs);
+    gather(x, dofs, 3 * npc, values);
+    for (int q = 0; q < g.rule.numPoints; ++q) {
+      double ux = 0.0, uy = 0.0, tx = 0.0, ty = 0.0;
+      for (int a = 0; a < npc; ++a) {
+        ux += g.rule.N[q][a] * values[3 * a];
+        uy += g.rule.N[q][a] * values[3 * a + 1];
+        tx += g.rule.dNdx[q][a] * values[3 * a + 2];
+        ty += g.rule.dNdy[q][a] * values[3 * a + 2];
+      }
+      local += measureWeight(g.rule, q, geometry) * rhoC * (ux * tx + uy * ty);
+    }
+  }
+  return local;
+}
+
+/// The groups that hold their temperature or transfer heat (a positive Heat Transfer Coefficient).
+std::vector<std::string> thermalGroups(const Teuchos::ParameterList& bcList) {
+  std::vector<std::string> groups;
+  for (auto it = bcList.begin(); it != bcList.end(); ++it) {
+    const std::string& name = bcList.name(it);
+    if (!bcList.isSublist(name)) continue;
+    const Teuchos::ParameterList& group = bcList.sublist(name);
+    if (group.isParameter("Temperature") ||
+        (group.isType<double>("Heat Transfer Coefficient") && group.get<double>("Heat Transfer Coefficient") > 0.0))
+      groups.push_back(name);
+  }
+  return groups;
+}
+
+}  // namespace
+
+EnergyBalance energyBalance(const Problem& problem) {
+  const Mesh& mesh = problem.mesh();
+  const DofMap& dofMap = problem.dofMap();
+  const Comm& comm = *dofMap.comm();
+  const Assembler& assembler = problem.assembler();
+  const Teuchos::ParameterList& params = problem.parameters();
+  const ThermalProperties thermal = ThermalProperties::fromParameters(params.sublist("Material").sublist("Thermal"));
+  const ThermalBoundaryConditions conditions(params.sublist("Boundary Conditions"), mesh);
+  const double rhoC = thermal.capacity();
+  const int t = dofMap.fields().component(kTemperatureField);
+
+  Vector reactions(dofMap.ownedMap()), xOverlap(dofMap.overlapMap());
+  assembler.residual(problem.solution(), reactions, false);
+  xOverlap.doImport(problem.solution(), *dofMap.importer(), Tpetra::INSERT);
+  const Workset x = vectorReader(xOverlap), R = vectorReader(reactions);
+  const ResponseContext<double> c{x, R, mesh, dofMap, assembler.physics(), assembler.physics().material,
+                                  problem.contactWalls(), nullptr};
+
+  EnergyBalance b;
+  double plastic = 0.0, stabilization = 0.0, deadArea = 0.0;
+  cellIntegrals(x, mesh, dofMap, assembler.physics(), c.material, 0.0, plastic, stabilization, deadArea);
+  b.plasticHeat = thermal.heatFraction * sumOverRanks(comm, plastic);
+  double made = b.plasticHeat;
+  for (const ContactWall& wall : problem.contactWalls()) {
+    const double power = sumOverWallNodes(c, wall.name(), [](double& local, const ContactWall& w, int k,
+                                                             const FrictionParameters<double>& fp, const double* u,
+                                                             const double*) {
+      local += w.tangentialForce(k, fp, u) * w.relativeSlip(k, u);
+    });
+    b.frictionPower[wall.name()] = power;
+    b.frictionHeat[wall.name()] = conditions.frictionHeatFraction(wall.name()) * power;
+    made += b.frictionHeat[wall.name()];
+  }
+  // The heat that leaves: −R_T at the nodes of the groups that hold or transfer T (each node once
+  // for the total; a node two such groups share is in both groups' Heat Flow).
+  std::vector<char> thermalNode(mesh.numNodes(), 0);
+  for (const std::string& group : thermalGroups(params.sublist("Boundary Conditions"))) {
+    Teuchos::ParameterList p;
+    p.set("Boundary", group);
+    b.heatOut[group] = HeatFlow(p).evaluate(c);
+    for (const auto& edge : mesh.boundary(group).edges) thermalNode[edge[0]] = thermalNode[edge[1]] = 1;
+  }
+  double out = 0.0;
+  for (LO n = 0; n < dofMap.numOwnedNodes(); ++n)
+    if (thermalNode[dofMap.overlapNodes()[n]]) out -= R.x(dofMap.dof(n, t), 0);
+  b.heatOutTotal = sumOverRanks(comm, out);
+  b.convected = sumOverRanks(comm, convectedHeat(x, mesh, dofMap, c.geometry(), rhoC));
+
+  // Per group: the flux Σ u_k·w_k and Σ T_k u_k·w_k (FlowRate's nodal weights, each node by its owner).
+  struct Crossing {
+    std::string group;
+    double flux, heat;
+  };
+  std::vector<Crossing> crossings;
+  double largest = 0.0;
+  for (const BoundaryGroup& group : mesh.boundaries) {
+    const BoundaryCurve curve = buildBoundaryCurve(mesh, group);
+    const auto w = FlowRate::fluxWeights(mesh, curve, c.geometry());
+    double flux = 0.0, heat = 0.0;
+    for (size_t k = 0; k < curve.nodes.size(); ++k) {
+      const LO n = dofMap.overlapIndex(curve.nodes[k]);
+      if (!dofMap.ownsNode(n)) continue;
+      const double q = w[k][0] * c.u(x, n, kUx) + w[k][1] * c.u(x, n, kUy);
+      flux += q;
+      heat += q * c.u(x, n, t);
+    }
+    crossings.push_back({group.name, sumOverRanks(comm, flux), sumOverRanks(comm, heat)});
+    largest = std::max(largest, std::abs(crossings.back().flux));
+  }
+  // T_ref: the mixing-cup temperature of what enters through the groups that carry material in
+  // (a wall's flux is the penalty's small penetration: below 1e-3 of the largest, left out).
+  double inFlux = 0.0, inHeat = 0.0;
+  for (const Crossing& g : crossings)
+    if (g.flux < -1e-3 * largest) {
+      inFlux += g.flux;
+      inHeat += g.heat;
+    }
+  b.referenceTemperature = inFlux < 0.0 ? inHeat / inFlux : 0.0;
+  double enthalpy = 0.0;
+  for (const Crossing& g : crossings) {
+    b.enthalpyFlow[g.group] = rhoC * (g.heat - b.referenceTemperature * g.flux);
+    enthalpy += b.enthalpyFlow[g.group];
+  }
+  b.imbalance = made - b.heatOutTotal - b.convected;
+  b.massLossTerm = b.convected - enthalpy;
+  b.enthalpyClosure = made != 0.0 ? (made - b.heatOutTotal - enthalpy) / made : 0.0;
+  return b;
+}
+
+void EnergyBalance::report(nlohmann::json& summary) const {
+  const double made = plasticHeat + [&] {
+    double s = 0.0;
+    for (const auto& [wall, q] : frictionHeat) s += q;
+    return s;
+  }();
+  summary["energy_balance"] = {{"reference_temperature", referenceTemperature},
+                               {"plastic_heat", plasticHeat},
+                               {"friction_power", frictionPower},
+                               {"friction_heat", frictionHeat},
+                               {"heat_made", made},
+                               {"heat_out", heatOut},
+                               {"heat_out_total", heatOutTotal},
+                               {"enthalpy_flow", enthalpyFlow},
+                               {"convected", convected},
+                               {"mass_loss_term", massLossTerm},
+                               {"imbalance", imbalance},
+                               {"relative_imbalance", made != 0.0 ? imbalance / made : 0.0},
+                               {"enthalpy_closure", enthalpyClosure}};
+}
+
+}  // namespace flowform
