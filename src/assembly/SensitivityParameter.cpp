@@ -30,6 +30,7 @@ std::string allowedNames(const std::vector<ContactWall>& walls, int law, const G
     if (p.sensitivity) list += ", '" + std::string(p.name) + "'";
   for (const auto& [name, value] : geo) list += ", 'Geo Parameter:" + name + "'";
   for (const auto& [name, value] : boundary) list += ", 'Boundary Value:" + name + "'";
+  for (const char* property : kThermalParameterNames) list += ", 'Thermal:" + std::string(property) + "'";
   if (walls.empty()) list += " (the friction parameters need contact walls; this case has none)";
   if (geo.empty()) list += " (a 'Geo Parameter:<name>' needs the name in Mesh/Geo Parameters; this case gives none)";
   return list;
@@ -66,6 +67,19 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
       }
     throw InputError(where + ": '" + geoName + "' is not given in Mesh/Geo Parameters (a shape parameter must be " +
                      "set there, with the .geo's DefineConstant of that name); allowed: " + allowedNames(walls, law, geo, boundary));
+  }
+  if (base == "Thermal") {
+    const std::string given = colon == std::string::npos ? std::string() : name.substr(colon + 1);
+    for (int i = 0; i < kNumThermalParameters; ++i)
+      if (given == kThermalParameterNames[i]) {
+        h.kind = ParameterKind::Thermal;
+        h.thermal = i;
+        h.symbol = kThermalParameterSymbols[i];
+        h.relativeStep = true;
+        return h;
+      }
+    throw InputError(where + ": '" + given + "' is not a property of Material/Thermal (Conductivity, Density, " +
+                     "Specific Heat, Heat Fraction); allowed: " + allowedNames(walls, law, geo, boundary));
   }
   if (base == "Boundary Value") {
     const std::string given = colon == std::string::npos ? std::string() : name.substr(colon + 1);
@@ -136,13 +150,14 @@ double SensitivityParameter::finiteDifferenceStep(double s, const FlowPhysics& p
   if (isGeo()) return geoValue != 0.0 ? s * std::abs(geoValue) : s;
   if (isBoundaryValue()) return boundaryValue != 0.0 ? s * std::abs(boundaryValue) : s;
   if (isFriction() || !relativeStep) return s;
-  const double value = std::abs(physics.material.values[material]);
+  const double value = std::abs(kind == ParameterKind::Thermal ? physics.thermal.value(thermal) : physics.material.values[material]);
   return value > 0.0 ? s * value : s;
 }
 
 double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics, const std::vector<ContactWall>& walls) {
   if (h.isGeo()) return h.geoValue;
   if (h.isBoundaryValue()) return h.boundaryValue;
+  if (h.kind == ParameterKind::Thermal) return physics.thermal.value(h.thermal);
   if (!h.isFriction()) return physics.material.values[h.material];
   for (size_t w = 0; w < walls.size(); ++w)
     if (h.entersWall(static_cast<int>(w), walls[w])) {
@@ -154,6 +169,10 @@ double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics,
 
 void shiftParameter(const SensitivityParameter& h, double delta, FlowPhysics& physics, std::vector<ContactWall>& walls) {
   if (h.partialsFromProblem()) return;  // a shape or a condition: the problem changes (sensitivity/PerturbedSolve)
+  if (h.kind == ParameterKind::Thermal) {
+    physics.thermal.value(h.thermal) += delta;
+    return;
+  }
   if (!h.isFriction()) {
     physics.material.values[h.material] += delta;
     return;

@@ -65,7 +65,7 @@ EnergyBalance energyBalance(const Problem& problem) {
   const Comm& comm = *dofMap.comm();
   const Assembler& assembler = problem.assembler();
   const Teuchos::ParameterList& params = problem.parameters();
-  const ThermalProperties thermal = ThermalProperties::fromParameters(params.sublist("Material").sublist("Thermal"));
+  const ThermalProperties& thermal = problem.physics().thermal;
   const ThermalBoundaryConditions conditions(params.sublist("Boundary Conditions"), mesh);
   const double rhoC = thermal.capacity();
   const int t = dofMap.fields().component(kTemperatureField);

@@ -56,14 +56,14 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings, fields);
   m_bcs = std::make_unique<BoundaryConditions>(bcList, m_mesh, *m_dofMap);
   m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
+  if (thermal) m_physics.thermal = ThermalProperties::fromParameters(material.sublist("Thermal"));
   m_assembler->setPhysics(m_physics);
   std::optional<ThermalBoundaryConditions> thermalConditions;
   if (thermal) {
-    // A law with a temperature (Sellars–Tegart) reads the field: the flow kernel that does.
+    // A law with a temperature (Sellars–Tegart, Hensel–Spittel) reads the field: the flow kernel that does.
     const auto flow = temperatureParameter(m_physics.material.law) >= 0 ? makeCellKernel(ThermalFlowKernel{}, fields)
                                                                         : makeCellKernel(FlowKernel{}, fields);
-    m_assembler->setKernels(
-        {flow, makeCellKernel(EnergyKernel(ThermalProperties::fromParameters(material.sublist("Thermal"))), fields)});
+    m_assembler->setKernels({flow, makeCellKernel(EnergyKernel{}, fields)});
     thermalConditions.emplace(applyThermalConditions());
   }
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);

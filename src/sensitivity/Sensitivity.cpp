@@ -36,7 +36,8 @@ static void buildValidParameters(const ValidList& valid) {
              "Shear Factor, Shear Factor:<wall>, the sensitivity parameters of the case's Material/Law (" +
                  materialNames + "), Geo Parameter:<name> (a Mesh/Geo Parameters entry), Boundary Value:<group>/<entry> "
                  "(a boundary condition's Velocity X/Y, Temperature, Heat Transfer Coefficient, Ambient or Tool "
-                 "Temperature, Friction Heat Fraction); none: no sensitivity work");
+                 "Temperature, Friction Heat Fraction), Thermal:<name> (Material/Thermal's Conductivity, Density, "
+                 "Specific Heat, Heat Fraction); none: no sensitivity work");
   valid->set("Finite Difference Check", false,
              "recompute every sensitivity by central differences (two more nonlinear solves per parameter, from the "
              "converged state, each with its contact-status loop) and report the relative difference (fd_check)");
@@ -75,6 +76,9 @@ Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<C
     if (name.empty()) continue;
     if (!seen.insert(name).second) throw InputError("Sensitivity/Parameters: '" + name + "' is given twice");
     m_parameters.push_back(parseSensitivityParameter(name, walls, materialLaw, geo, boundary));
+    if (!temperatureField && m_parameters.back().kind == ParameterKind::Thermal)
+      throw InputError("Sensitivity/Parameters: '" + name + "' is a property of the temperature field, and the case "
+                       "has none: add a Material/Thermal sublist");
     // With a Temperature field the law's own temperature is only Newton's start (the field gives
     // each cell its T): its derivative would be 0, whatever the physics.
     if (temperatureField && m_parameters.back().kind == ParameterKind::Material &&

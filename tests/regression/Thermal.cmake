@@ -73,3 +73,10 @@ flowform_exit_test(bad_input_friction_heat_off_a_wall CASE channel_small.xml
 flowform_exit_test(bad_input_friction_heat_without_field CASE channel_small.xml
   SET "Boundary Conditions/top/Friction Heat Fraction=0.5"
   CONTAINS "Boundary Conditions/top" "no temperature field")
+# A thermal property as a sensitivity parameter in a case without the field, or one that is none.
+flowform_exit_test(bad_input_sensitivity_thermal_without_field CASE channel_small.xml
+  SET "Sensitivity/Parameters={Thermal:Conductivity}"
+  CONTAINS "Thermal:Conductivity" "add a Material/Thermal sublist")
+flowform_exit_test(bad_input_sensitivity_thermal_unknown CASE channel_small.xml
+  SET "Material/Thermal/Conductivity=1" "Sensitivity/Parameters={Thermal:Emissivity}"
+  CONTAINS "Thermal:Emissivity" "Conductivity, Density, Specific Heat, Heat Fraction")

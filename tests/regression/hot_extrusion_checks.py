@@ -19,7 +19,10 @@ real units (docs/theory.md §10.2). What is asserted, against what flowform did 
   boundary values (Boundary Value:<group>/<entry>: the ram speed, the billet's temperature, the
   container's heat transfer coefficient, temperature and friction heat fraction; ∂R/∂h and ∂φ/∂h
   from two assemblies, the residual being affine in each) for the ram force, the exit temperature
-  and the container's heat, within 1e-4 (measured ≤ 2.2e-8);
+  and the container's heat, within 1e-4 (measured ≤ 8.6e-8); and the thermal properties
+  (Thermal:Conductivity, Density, Specific Heat, Heat Fraction: seeded in the energy kernel) for
+  the same responses within 1e-4 (measured ≤ 1.6e-7), with ρ dφ/dρ = c dφ/dc to 1e-8 (only ρc
+  enters);
 - the summary's energy balance (docs/theory.md §10): η P + β P_f = Q_out + ∫ ρc u·∇T at the
   solved state within 1e-8 of the heat made (Newton leaves ~1e-15); the enthalpy through every
   group closes it within 0.5 % (measured 0.11 % plane, 0.09 % round bar: the die lip's mass loss
@@ -43,6 +46,7 @@ T_BILLET, ETA, RHO_C = 723.0, 0.9, 2.7e-9 * 9.0e8
 TOOLS = ("container", "die_face", "die_land")
 # The ram speed is Velocity X of the plane section, Velocity Y (along the axis) of the round bar.
 SPEED = {"hot_extrusion.xml": "ram/Velocity X", "hot_extrusion_axisym.xml": "ram/Velocity Y"}
+THERMAL = ("Conductivity", "Density", "Specific Heat", "Heat Fraction")
 OTHER_BOUNDARY_VALUES = ("ram/Temperature", "container/Heat Transfer Coefficient", "container/Tool Temperature",
                          "container/Friction Heat Fraction")
 
@@ -143,7 +147,8 @@ def main():
     boundary_values = (SPEED[name],) + OTHER_BOUNDARY_VALUES
     sensitivity = launcher.run(flowform, case, os.path.join(outdir, "sensitivity"),
                                ["Sensitivity/Parameters={Friction Coefficient, Activation Energy, " +
-                                ", ".join("Boundary Value:" + b for b in boundary_values) + "}",
+                                ", ".join("Boundary Value:" + b for b in boundary_values) + ", " +
+                                ", ".join("Thermal:" + t for t in THERMAL) + "}",
                                 "Sensitivity/Finite Difference Check=true"], quiet=True)
     failed += check(sensitivity.status == 0, f"the run with sensitivities exits {sensitivity.status}")
     if sensitivity.status == 0:
@@ -151,6 +156,7 @@ def main():
         pairs = [(r, "Activation Energy") for r in ("ram_force", "exit_temperature", "ram_heat", "plastic_power")]
         pairs += [(r, "Boundary Value:" + b) for r in ("ram_force", "exit_temperature", "container_heat")
                   for b in boundary_values]
+        pairs += [(r, "Thermal:" + t) for r in ("ram_force", "exit_temperature", "container_heat") for t in THERMAL]
         for response, parameter in pairs + [("ram_force", "Friction Coefficient")]:
             entry = fd[response][parameter]
             failed += check(entry["rel_diff"] <= 1e-4, f"d{response}/d({parameter}): DDM {entry['ddm']:.8g}, FD "
@@ -160,6 +166,15 @@ def main():
     friction_heat = sum(balance["friction_heat"].values())
     failed += check(abs(friction_heat - BETA * sum(balance["friction_power"].values())) <= 1e-12 * made,
                     f"the walls keep beta = {BETA} of their friction power: {friction_heat:.2f} mW(/mm)")
+    if sensitivity.status == 0:
+        # Density and specific heat enter only as rho c: rho dphi/drho = c dphi/dc exactly (one
+        # factorization, the AD seeds' product rule; round-off ~1e-12 relative).
+        material = sensitivity.summary["parameters"]["Material"]["Thermal"]
+        for response in ("ram_force", "exit_temperature", "container_heat"):
+            d_rho = sensitivity.summary["sensitivities"][response]["Thermal:Density"] * material["Density"]
+            d_c = sensitivity.summary["sensitivities"][response]["Thermal:Specific Heat"] * material["Specific Heat"]
+            failed += check(abs(d_rho - d_c) <= 1e-8 * abs(d_c), f"{response}: rho d/drho = {d_rho:.10g} = "
+                                                                  f"c d/dc = {d_c:.10g}")
     rise = hot["exit_temperature"] - T_BILLET
     adiabatic = made / (RHO_C * hot["product_flux"])
     failed += check(0.0 < rise < adiabatic, f"exit temperature rise {rise:.3f} K in (0, {adiabatic:.3f} K), the "

@@ -34,10 +34,12 @@ struct ThermalProblem {
     dofMap = std::make_unique<DofMap>(mesh, comm, std::vector<std::array<GO, 2>>{}, fields);
     bcs = std::make_unique<BoundaryConditions>(bcList, mesh, *dofMap);
     assembler = std::make_unique<Assembler>(mesh, *dofMap, *bcs);
-    assembler->setPhysics(physics);
+    FlowPhysics withProperties = physics;
+    withProperties.thermal = properties;
+    assembler->setPhysics(withProperties);
     assembler->setKernels({temperatureDependentFlow ? makeCellKernel(ThermalFlowKernel{}, fields)
                                                     : makeCellKernel(FlowKernel{}, fields),
-                           makeCellKernel(EnergyKernel(properties), fields)});
+                           makeCellKernel(EnergyKernel{}, fields)});
   }
   RCP<Vector> vector() const { return Teuchos::rcp(new Vector(dofMap->ownedMap())); }
 };

@@ -99,6 +99,7 @@ class CellKernelOf final : public CellKernel {
     using Scalar = typename EvalT::template Scalar<N>;
     using PScalar = typename EvalT::ParamScalar;
     const MaterialParameters<PScalar> material = materialFor<PScalar>(loop.physics.material, loop.h);
+    const ThermalParameters<PScalar> thermal = thermalFor<PScalar>(loop.physics.thermal, loop.h);
     const DofMap& dofMap = loop.dofMap;
     const size_t numCells = dofMap.cells().size();
     CellGeometry g;
@@ -111,7 +112,7 @@ class CellKernelOf final : public CellKernel {
       gather(ws, dofs, N, values);
       std::fill(res, res + N, Scalar(0.0));
       StressDualPoint* dual = Kernel::kUsesStressDual && ws.dual ? ws.dual->cells.cell(k, numCells) : nullptr;
-      m_kernel.evaluate(CellContext<PScalar>{g, loop.physics.kernel, material, dual}, values, res);
+      m_kernel.evaluate(CellContext<PScalar>{g, loop.physics.kernel, material, dual, &thermal}, values, res);
       if (loop.applyConstraints) {
         if (m_velocityRow >= 0)
           for (int a = 0; a < NumNodes; ++a)

@@ -70,6 +70,19 @@ MaterialParameters<PScalar> materialFor(const MaterialParameters<double>& m, con
   }
 }
 
+/// k, ρc, η of `p`, with h seeded when it is one of them ("Thermal:<name>"; PScalar TangentFad).
+template <typename PScalar>
+ThermalParameters<PScalar> thermalFor(const ThermalProperties& p, const SensitivityParameter* h) {
+  if constexpr (std::is_same_v<PScalar, double>) {
+    return {p.conductivity, p.capacity(), p.heatFraction};
+  } else {
+    auto seed = [&](int i) {
+      return h && h->kind == ParameterKind::Thermal && h->thermal == i ? PScalar(1, 0, p.value(i)) : PScalar(p.value(i));
+    };
+    return {seed(kConductivity), seed(kDensity) * seed(kSpecificHeat), seed(kHeatFraction)};
+  }
+}
+
 /// Wall `w`'s ν and m, with h seeded where h enters that wall (PScalar TangentFad).
 template <typename PScalar>
 FrictionParameters<PScalar> frictionFor(const ContactWall& wall, int w, const SensitivityParameter* h) {

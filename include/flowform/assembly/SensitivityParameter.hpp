@@ -11,6 +11,8 @@
 //   "Geo Parameter:<name>"              a shape parameter: a Mesh/Geo Parameters entry of the
 //                                       case's .geo (a die angle, a roll radius); it moves the
 //                                       mesh, not a coefficient (sensitivity/GeoParameterMotion)
+//   "Thermal:<name>"                    a property of Material/Thermal: Conductivity, Density,
+//                                       Specific Heat, Heat Fraction (seeded in the energy kernel)
 //   "Boundary Value:<group>/<entry>"    a value a boundary group's condition gives: Velocity X,
 //                                       Velocity Y (a ram speed), Temperature (a billet's),
 //                                       Heat Transfer Coefficient, Ambient or Tool Temperature.
@@ -25,15 +27,16 @@
 #include <utility>
 #include <vector>
 
-#include "flowform/physics/Material.hpp"
 #include "flowform/contact/ContactWall.hpp"
+#include "flowform/physics/Material.hpp"
+#include "flowform/physics/ThermalProperties.hpp"
 
 namespace flowform {
 
 struct FlowPhysics;
 
 /// The friction parameters, one of the material law's (which: `material`), or a .geo constant.
-enum class ParameterKind { FrictionCoefficient, ShearFactor, Material, GeoParameter, BoundaryValue };
+enum class ParameterKind { FrictionCoefficient, ShearFactor, Material, GeoParameter, BoundaryValue, Thermal };
 
 struct SensitivityParameter {
   std::string name;    ///< as the case gives it, e.g. "Friction Coefficient:<wall group>"
@@ -41,6 +44,7 @@ struct SensitivityParameter {
   ParameterKind kind = ParameterKind::Material;
   int wall = -1;       ///< friction parameters: the wall's index, −1 for every wall
   int material = -1;   ///< material parameters: the index in MaterialParameters::values
+  int thermal = -1;    ///< thermal properties: the index (ThermalParameter) in FlowPhysics::thermal
   bool relativeStep = false;  ///< the finite-difference step is relative (the law says)
   std::string geoName;        ///< a Geo Parameter: its name in Mesh/Geo Parameters
   double geoValue = 0.0;      ///< a Geo Parameter: its value in the case

@@ -1,15 +1,18 @@
-// What the bulk physics is: geometry, stabilization, body force and the material law. The
+// What the bulk physics is: geometry, stabilization, body force, the material law and (a case with
+// a Temperature field) the thermal properties. The
 // solvers change it between solves (continuation in n and e0); the assembler reads it.
 #pragma once
 
 #include "flowform/physics/FlowResidual.hpp"
 #include "flowform/physics/Material.hpp"
+#include "flowform/physics/ThermalProperties.hpp"
 
 namespace flowform {
 
 struct FlowPhysics {
   FlowKernelSettings kernel;
   MaterialParameters<double> material = powerLaw(0.0, 1.0, 1.0, 1e-3);
+  ThermalProperties thermal;  ///< Material/Thermal (read by the energy kernel; a case without it has no T)
 };
 
 }  // namespace flowform

@@ -24,6 +24,7 @@
 #include "flowform/physics/FlowResidual.hpp"
 #include "flowform/physics/Material.hpp"
 #include "flowform/physics/StressDual.hpp"
+#include "flowform/physics/ThermalProperties.hpp"
 
 namespace flowform {
 
@@ -33,8 +34,8 @@ struct KernelFields {
 };
 
 /// What a kernel gets for one cell besides its dofs: the cell's geometry (rule, centroid,
-/// h_K), the case's bulk settings (geometry, β, body force), the case's material (PScalar:
-/// seeded by the assembler when a parameter derivative is wanted) and, for a kernel with
+/// h_K), the case's bulk settings (geometry, β, body force), the case's material and thermal
+/// properties (PScalar: seeded by the assembler when a parameter derivative is wanted) and, for a kernel with
 /// kUsesStressDual in a Jacobian evaluation with the dual linearization, the cell's points.
 template <typename PScalar>
 struct CellContext {
@@ -42,6 +43,7 @@ struct CellContext {
   const FlowKernelSettings& settings;
   const MaterialParameters<PScalar>& material;
   StressDualPoint* dual = nullptr;
+  const ThermalParameters<PScalar>* thermal = nullptr;  ///< k, ρc, η (seeded like the material)
 };
 
 }  // namespace flowform

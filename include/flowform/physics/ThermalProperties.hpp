@@ -17,6 +17,12 @@
 
 namespace flowform {
 
+/// The properties by index (the sensitivity parameters "Thermal:<name>").
+enum ThermalParameter { kConductivity, kDensity, kSpecificHeat, kHeatFraction, kNumThermalParameters };
+inline constexpr const char* kThermalParameterNames[kNumThermalParameters] = {"Conductivity", "Density",
+                                                                              "Specific Heat", "Heat Fraction"};
+inline constexpr const char* kThermalParameterSymbols[kNumThermalParameters] = {"k", "rho", "c", "eta"};
+
 struct ThermalProperties {
   double conductivity = 1.0;   ///< k > 0
   double density = 1.0;        ///< ρ > 0
@@ -24,11 +30,21 @@ struct ThermalProperties {
   double heatFraction = 0.9;   ///< η in [0, 1]
   /// ρ c, the volumetric heat capacity.
   double capacity() const { return density * specificHeat; }
+  /// The property of index i (ThermalParameter).
+  double& value(int i) { return i == kConductivity ? conductivity : i == kDensity ? density : i == kSpecificHeat ? specificHeat : heatFraction; }
+  double value(int i) const { return const_cast<ThermalProperties*>(this)->value(i); }
 
   /// The entries of Material/Thermal, with their ranges.
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
   /// From a validated Material/Thermal sublist.
   static ThermalProperties fromParameters(const Teuchos::ParameterList& thermal);
+};
+
+/// What the energy kernel reads, on the parameter scalar (PScalar: an AD type with the property a
+/// sensitivity parameter seeds; assembly/EvaluationTypes.hpp thermalFor).
+template <typename PScalar>
+struct ThermalParameters {
+  PScalar conductivity, capacity, heatFraction;  ///< k, ρc, η
 };
 
 }  // namespace flowform

@@ -48,7 +48,6 @@ struct EnergyKernel {
                 "strainRateAt reads u_x, u_y at the flow layout's slots");
   static constexpr bool kUsesStressDual = false;
 
-  explicit EnergyKernel(const ThermalProperties& properties) : m_properties(properties) {}
 
   const char* name() const { return "Energy"; }
   KernelFields fields() const { return {{kTemperatureField}, {"Velocity", kTemperatureField}}; }
@@ -59,9 +58,10 @@ struct EnergyKernel {
     using std::sqrt;
     const CellQuadrature& cq = c.cell.rule;
     const Geometry geometry = c.settings.geometry;
-    const double k = m_properties.conductivity, rhoC = m_properties.capacity(), eta = m_properties.heatFraction;
+    // k, ρc, η: the case's (FlowPhysics::thermal), an AD type when one is the parameter of a derivative.
+    const PScalar k = c.thermal->conductivity, rhoC = c.thermal->capacity, eta = c.thermal->heatFraction;
     const double h = c.cell.diameter;
-    const double diffusive = 9.0 * (4.0 * k / (h * h)) * (4.0 * k / (h * h));
+    const PScalar diffusive = 9.0 * (4.0 * k / (h * h)) * (4.0 * k / (h * h));
     // The law at the cell's temperature T_K, as the flow kernel's (ThermalFlowKernel.hpp): the
     // heat is the flow's dissipation exactly (unchanged for a law without a temperature).
     const MaterialParameters<Scalar> material = atTemperature(c.material, centroidTemperature(c.cell, values, C, kT));
@@ -87,9 +87,6 @@ struct EnergyKernel {
       }
     }
   }
-
- private:
-  ThermalProperties m_properties;
 };
 
 }  // namespace flowform
