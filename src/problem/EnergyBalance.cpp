@@ -144,7 +144,12 @@ EnergyBalance energyBalance(const Problem& problem) {
   }
   b.imbalance = made - b.heatOutTotal - b.convected;
   b.massLossTerm = b.convected - enthalpy;
-  b.enthalpyClosure = made != 0.0 ? (made - b.heatOutTotal - enthalpy) / made : 0.0;
+  // The balance's scale: the largest of its flows (the heat made is 0 in a case without heating
+  // that only cools, e.g. an extrudate in air).
+  double flows = 0.0;
+  for (const auto& [group, e] : b.enthalpyFlow) flows += std::abs(e);
+  b.scale = std::max({std::abs(made), std::abs(b.heatOutTotal), flows});
+  b.enthalpyClosure = b.scale > 0.0 ? (made - b.heatOutTotal - enthalpy) / b.scale : 0.0;
   return b;
 }
 
@@ -165,7 +170,8 @@ void EnergyBalance::report(nlohmann::json& summary) const {
                                {"convected", convected},
                                {"mass_loss_term", massLossTerm},
                                {"imbalance", imbalance},
-                               {"relative_imbalance", made != 0.0 ? imbalance / made : 0.0},
+                               {"scale", scale},
+                               {"relative_imbalance", scale > 0.0 ? imbalance / scale : 0.0},
                                {"enthalpy_closure", enthalpyClosure}};
 }
 

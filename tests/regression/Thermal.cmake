@@ -80,3 +80,9 @@ flowform_exit_test(bad_input_sensitivity_thermal_without_field CASE channel_smal
 flowform_exit_test(bad_input_sensitivity_thermal_unknown CASE channel_small.xml
   SET "Material/Thermal/Conductivity=1" "Sensitivity/Parameters={Thermal:Emissivity}"
   CONTAINS "Thermal:Emissivity" "Conductivity, Density, Specific Heat, Heat Fraction")
+# Heat transfer on a moving free surface: the die-swell extrudate cooling in air (one-way coupling:
+# the flow is the isothermal one; the energy balance closes) (cooling_extrudate_checks.py).
+add_test(NAME cooling_extrudate_checks
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/cooling_extrudate_checks.py
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/cooling_extrudate)
+set_tests_properties(cooling_extrudate_checks PROPERTIES LABELS "regression")

@@ -14,8 +14,9 @@
 //   C = Σ_groups E_g − ρc ∫ (T − T_ref) div u_h dΩ,   E_g = ρc ∫_g (T − T_ref) u·n dΓ,
 // T_ref the mixing-cup temperature of what enters: the last term ("mass_loss_term") is what the
 // discrete flow's mass loss (div u_h ≠ 0 near a die corner) and the boundary's lumped quadrature
-// take from the physical balance, and "enthalpy_closure" = (η P + Σ β P_f − Σ Q_out − Σ E_g) /
-// (η P + Σ β P_f) says how closely that physical balance closes.
+// take from the physical balance, and "enthalpy_closure" = (η P + Σ β P_f − Q_out − Σ E_g) / scale
+// says how closely that physical balance closes ("scale" the largest of the heat made, the heat
+// out and Σ |E_g|: a case that only cools makes no heat; "relative_imbalance" is over it too).
 #pragma once
 
 #include <map>
@@ -38,7 +39,8 @@ struct EnergyBalance {
   double convected = 0.0;                      ///< C = ∫ ρc u·∇T dΩ
   double imbalance = 0.0;                      ///< η P + Σ β P_f − Q_out − C: Σ R_T at the other nodes
   double massLossTerm = 0.0;                   ///< C − Σ E_g
-  double enthalpyClosure = 0.0;                ///< (η P + Σ β P_f − heatOutTotal − Σ E_g) / (η P + Σ β P_f)
+  double scale = 0.0;                          ///< the largest of |η P + Σ β P_f|, |Q_out|, Σ |E_g|
+  double enthalpyClosure = 0.0;                ///< (η P + Σ β P_f − Q_out − Σ E_g) / scale
 
   /// The "energy_balance" block.
   void report(nlohmann::json& summary) const;
