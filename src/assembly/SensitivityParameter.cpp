@@ -99,7 +99,7 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
       }
     throw InputError(where + ": '" + given + "' is not a value the case's Boundary Conditions give (a group's " +
                      "Velocity X, Velocity Y, Temperature, Heat Transfer Coefficient, Ambient or Tool Temperature, " +
-                     "not of a Rigid Inflow); allowed: " + allowedNames(walls, law, geo, boundary));
+                     "Friction Heat Fraction, not of a Rigid Inflow); allowed: " + allowedNames(walls, law, geo, boundary));
   }
   const std::vector<MaterialParameterInfo>& own = materialLaws()[law].parameters;
   for (size_t i = 0; i < own.size(); ++i)

@@ -1,5 +1,8 @@
 #include "flowform/physics/materials/MaterialLaws.hpp"
 
+#include <type_traits>
+#include <utility>
+
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "flowform/core/InputError.hpp"
@@ -51,6 +54,12 @@ void checkOwnParameters(const Teuchos::ParameterList& material, int law) {
       }
   }
 }
+
+/// Whether a law has the optional static std::string inputError(const double* values).
+template <typename Law, typename = void>
+struct HasInputError : std::false_type {};
+template <typename Law>
+struct HasInputError<Law, std::void_t<decltype(Law::inputError(std::declval<const double*>()))>> : std::true_type {};
 
 }  // namespace
 
@@ -108,6 +117,14 @@ MaterialParameters<double> materialFromParameters(const Teuchos::ParameterList& 
   const MaterialLawInfo& info = materialLaws()[m.law];
   for (size_t i = 0; i < info.parameters.size(); ++i) m.values[i] = material.get<double>(info.parameters[i].name);
   m.cutoff = material.get<double>("Strain Rate Cutoff");
+  // A law's own check of its constants together (a law's optional inputError(values)).
+  visitByIndex(RegisteredMaterialLaws{}, m.law, [&](auto tag) {
+    using Law = typename decltype(tag)::type;
+    if constexpr (HasInputError<Law>::value) {
+      const std::string error = Law::inputError(m.values.data());
+      if (!error.empty()) throw InputError("Material (" + info.name + "): " + error);
+    }
+  });
   return m;
 }
 

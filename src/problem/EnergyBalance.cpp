@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 #include <nlohmann/json.hpp>
 
@@ -96,10 +97,14 @@ EnergyBalance energyBalance(const Problem& problem) {
   // for the total; a node two such groups share is in both groups' Heat Flow).
   std::vector<char> thermalNode(mesh.numNodes(), 0);
   for (const std::string& group : thermalGroups(params.sublist("Boundary Conditions"))) {
+    for (const auto& edge : mesh.boundary(group).edges) thermalNode[edge[0]] = thermalNode[edge[1]] = 1;
     Teuchos::ParameterList p;
     p.set("Boundary", group);
-    b.heatOut[group] = HeatFlow(p).evaluate(c);
-    for (const auto& edge : mesh.boundary(group).edges) thermalNode[edge[0]] = thermalNode[edge[1]] = 1;
+    try {
+      b.heatOut[group] = HeatFlow(p).evaluate(c);
+    } catch (const std::exception&) {  // not one simple curve: in the total only
+      b.groupsLeftOut.push_back(group);
+    }
   }
   double out = 0.0;
   for (LO n = 0; n < dofMap.numOwnedNodes(); ++n)
@@ -115,7 +120,15 @@ EnergyBalance energyBalance(const Problem& problem) {
   std::vector<Crossing> crossings;
   double largest = 0.0;
   for (const BoundaryGroup& group : mesh.boundaries) {
-    const BoundaryCurve curve = buildBoundaryCurve(mesh, group);
+    // A group that is not one simple curve (several pieces, a branch) has no oriented normal here:
+    // left out of the enthalpy flows and listed (the same on every rank: the mesh is replicated).
+    BoundaryCurve curve;
+    try {
+      curve = buildBoundaryCurve(mesh, group);
+    } catch (const std::exception&) {
+      b.groupsLeftOut.push_back(group.name);
+      continue;
+    }
     const auto w = FlowRate::fluxWeights(mesh, curve, c.geometry());
     double flux = 0.0, heat = 0.0;
     for (size_t k = 0; k < curve.nodes.size(); ++k) {
@@ -172,7 +185,8 @@ void EnergyBalance::report(nlohmann::json& summary) const {
                                {"imbalance", imbalance},
                                {"scale", scale},
                                {"relative_imbalance", scale > 0.0 ? imbalance / scale : 0.0},
-                               {"enthalpy_closure", enthalpyClosure}};
+                               {"enthalpy_closure", enthalpyClosure},
+                               {"groups_left_out", groupsLeftOut}};
 }
 
 }  // namespace flowform

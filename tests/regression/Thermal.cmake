@@ -86,3 +86,14 @@ add_test(NAME cooling_extrudate_checks
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/cooling_extrudate_checks.py
                  $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/cooling_extrudate)
 set_tests_properties(cooling_extrudate_checks PROPERTIES LABELS "regression")
+# A friction heat fraction outside [0, 1] (the entry's validator); Hensel-Spittel's constants that
+# make the flow stress fall with the rate, or need theta > 0 where the law's temperature is below 0 °C.
+flowform_exit_test(bad_input_friction_heat_out_of_range CASE ../../../xml/hot_extrusion.xml
+  SET "Boundary Conditions/container/Friction Heat Fraction=1.5"
+  CONTAINS "Friction Heat Fraction")
+flowform_exit_test(bad_input_hensel_spittel_rate_exponent CASE ../../../xml/channel_hensel_spittel.xml
+  SET "Material/m8=-0.001"
+  CONTAINS "Material (Hensel-Spittel)" "m3 + m8")
+flowform_exit_test(bad_input_hensel_spittel_cold_m9 CASE ../../../xml/channel_hensel_spittel.xml
+  SET "Material/Temperature=250"
+  CONTAINS "Material (Hensel-Spittel)" "273.15")

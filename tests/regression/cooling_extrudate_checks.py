@@ -10,7 +10,7 @@ temperature field did not compute:
 - the summary's energy balance (docs/theory.md §10): the imbalance (what Newton leaves) below 1e-8
   of the balance's scale, and the enthalpy the extrudate loses equals the heat the surface gives to
   the air within 1e-3 (measured 3.3e-4: the lumped boundary quadrature's O(h²), the flow's mass
-  loss being 1e-7 here); the surface's heat equals its Heat Flow response;
+  loss being 1e-7 here);
 - the heat goes the right way: the surface gives heat (> 0) and the mean exit temperature lies
   between the air's and the billet's. (The 1e-10: both runs converge to the solver tolerance, their
   last iterates differing; measured 1.1e-11.)
@@ -55,8 +55,6 @@ def main():
                     f"energy balance: the enthalpy lost equals the heat given to the air to "
                     f"{balance['enthalpy_closure']:.1e} <= 1e-3 (heat {balance['heat_out']['free_surface']:.6f}, "
                     f"enthalpy out {sum(balance['enthalpy_flow'].values()):.6f})")
-    failed += check(abs(balance["heat_out"]["free_surface"] - cool["surface_heat"]) <= 1e-12,
-                    "energy balance: the surface's heat equals its Heat Flow")
     failed += check(cool["surface_heat"] > 0.0, f"the free surface gives {cool['surface_heat']:.6f} to the air")
     failed += check(0.0 < cool["exit_temperature"] < 1.0,
                     f"mean exit temperature {cool['exit_temperature']:.6f} between the air's 0 and the billet's 1")

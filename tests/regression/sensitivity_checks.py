@@ -26,7 +26,9 @@ subcommands
               5e-5 (~2.6e-7 by δ², the others ≤ 2e-7; the solver error grows 4× to ≲ 1e-9).
   hensel-spittel  xml/channel_hensel_spittel.xml (every term of the law on): du/dh and
               dp/dh for its eleven parameters by DDM vs the built-in central differences < 1e-5
-              (relative steps); ε A |d/dA| = |d/dm7| (1e-8: σ̄ depends on A and m7 only through A e^(m7 ε)).
+              (relative steps: for the small θ coefficients m5, m8 δ = 4e-8, 1e-8 moves log σ̄ by θ δ ~ 3e-5,
+              enough above the solves' 1e-10 noise: measured 1e-9 and 4e-10); ε A |d/dA| = |d/dm7| (1e-8:
+              σ̄ depends on A and m7 only through A e^(m7 ε)).
   shape       shape parameters ("Geo Parameter:<name>", docs/sensitivity.md §10): the extrusion's die
               opening `exit` and land length `Le` (dF/dh by DDM on the mesh moved along V = dX/dh
               vs the built-in central differences, the .geo meshed again at h ± δ): |difference|

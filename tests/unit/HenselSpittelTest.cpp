@@ -104,6 +104,19 @@ TEUCHOS_UNIT_TEST(HenselSpittel, DerivativeWrtParametersMatchesFd) {
   }
 }
 
+TEUCHOS_UNIT_TEST(HenselSpittel, DerivativeInM9AtZero) {
+  // m9 = 0 (no θ^m9 term) still has ∂σ̄/∂m9 = σ̄ log θ: the term is kept with its zero exponent.
+  MaterialParameters<double> m = steel();
+  m.values[HenselSpittel::kM9] = 0.0;
+  MaterialParameters<PFad> p;
+  p.law = kLaw;
+  for (int i = 0; i < kNum; ++i) p.values[i] = PFad(kNum + 1, i, m.values[i]);
+  p.cutoff = PFad(m.cutoff);
+  const PFad sigma = flowform::flowStress(PFad(2.0), p);
+  const double theta = m.values[HenselSpittel::kTemperature] - 273.15;
+  TEST_FLOATING_EQUALITY(sigma.dx(HenselSpittel::kM9), sigma.val() * std::log(theta), kValueTol);
+}
+
 TEUCHOS_UNIT_TEST(HenselSpittel, RegistryAndPredictor) {
   const auto& laws = flowform::materialLaws();
   TEST_EQUALITY(laws[kLaw].name, std::string("Hensel-Spittel"));

@@ -67,7 +67,7 @@ class ThermalBoundaryConditions {
   };
   std::vector<NodeTemperature> m_prescribed;
   std::vector<Transfer> m_transfer;
-  std::map<std::string, double> m_frictionHeat;  ///< wall -> β > 0
+  std::map<std::string, double> m_frictionHeat;  ///< wall -> β ≠ 0
 };
 
 }  // namespace flowform

@@ -21,6 +21,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -39,6 +40,9 @@ struct EnergyBalance {
   double convected = 0.0;                      ///< C = ∫ ρc u·∇T dΩ
   double imbalance = 0.0;                      ///< η P + Σ β P_f − Q_out − C: Σ R_T at the other nodes
   double massLossTerm = 0.0;                   ///< C − Σ E_g
+  /// Groups that are not one simple curve: no per-group heat (Heat Flow) or enthalpy flow for them
+  /// (their nodes still count in Q_out; their enthalpy is then in mass_loss_term).
+  std::vector<std::string> groupsLeftOut;
   double scale = 0.0;                          ///< the largest of |η P + Σ β P_f|, |Q_out|, Σ |E_g|
   double enthalpyClosure = 0.0;                ///< (η P + Σ β P_f − Q_out − Σ E_g) / scale
 

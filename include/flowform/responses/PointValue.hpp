@@ -8,7 +8,8 @@
 //
 // `Field` is a component of the case's unknowns: Velocity X, Velocity Y, Pressure, Temperature
 // (that one only with Material/Thermal: readsTemperature). A point outside the mesh is refused
-// before the solve (checkMesh); one that a moving surface leaves outside is an error at evaluation.
+// before the solve (checkMesh); one that a moving surface leaves outside is an input error at
+// evaluation (exit 2, before any output is written).
 #pragma once
 
 #include <array>
@@ -60,8 +61,9 @@ struct PointValue {
     if (component < 0) throw InputError("Responses: a Point Value of " + m_field + " needs Material/Thermal");
     const CellPoint at = PointLocator(c.mesh).locate(m_point);
     if (!at.inside)
-      throw std::runtime_error("Point Value: the point (" + std::to_string(m_point[0]) + ", " +
-                               std::to_string(m_point[1]) + ") has left the moved mesh");
+      throw InputError("Responses: a Point Value's point (" + std::to_string(m_point[0]) + ", " +
+                       std::to_string(m_point[1]) + ") lies outside the mesh its free surfaces moved to: place it "
+                       "inside the material");
     const GO* nodes = c.mesh.cell(at.cell);
     Scalar local = 0.0;
     for (int a = 0; a < nodesPerCell(c.mesh.cellType); ++a) {

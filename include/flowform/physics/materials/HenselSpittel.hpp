@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cmath>
+#include <string>
 
 #include "flowform/physics/materials/MaterialLaw.hpp"
 
@@ -57,11 +58,25 @@ struct HenselSpittel {
     const PScalar eps = p[kStrain];
     PScalar logC = log(p[kA]) + p[kM1] * theta + p[kM2] * log(eps) + p[kM4] / eps + p[kM5] * theta * log(1.0 + eps) +
                    p[kM7] * eps;
-    if (p[kM9] != 0.0) logC += p[kM9] * log(theta);
+    // θ^m9: with θ > 0 always (so that ∂/∂m9 = log θ survives at m9 = 0); at θ ≤ 0 only when m9 ≠ 0,
+    // where it is NaN (refused for the law's own T by inputError; the field's is checked for NaN).
+    if (theta > 0.0 || p[kM9] != 0.0) logC += p[kM9] * log(theta);
     return exp(logC + (p[kM3] + p[kM8] * theta) * log(eReg));
   }
 
   static bool isNewtonian(const double*) { return false; }
+
+  /// What is wrong with the constants at the law's own temperature ("" when nothing): θ > 0 where
+  /// θ^m9 is used, and a flow stress that rises with the rate (m3 + m8 θ > 0).
+  static std::string inputError(const double* p) {
+    const double theta = p[kTemperature] - kCelsiusZero;
+    if (p[kM9] != 0.0 && theta <= 0.0)
+      return "Temperature must exceed 273.15 K (θ > 0 °C) when m9 != 0 (θ^m9)";
+    if (p[kM3] + p[kM8] * theta <= 0.0)
+      return "the rate exponent m3 + m8 θ = " + std::to_string(p[kM3] + p[kM8] * theta) +
+             " at θ = " + std::to_string(theta) + " °C must be > 0 (a flow stress that rises with the rate)";
+    return "";
+  }
 
   /// γ of the Newtonian predictor: σ̄ = e_r/γ through the law's stress at e_r = 1, γ = 1/σ̄(1).
   static double newtonianRateConstant(const double* p) { return 1.0 / flowStress<double, double>(1.0, p); }

@@ -1,7 +1,9 @@
 // The registry of material laws: the one list a new law is added to. Adding a law is one file
 // beside this one (a struct like PowerLaw: name, description, its parameters with their
 // ranges, defaults and whether they are sensitivity parameters, its templated flow stress,
-// whether it is linear and the γ of its Newtonian predictor) and one entry in
+// whether it is linear and the γ of its Newtonian predictor; optionally a static
+// std::string inputError(const double* values) that checks its constants together, "" when
+// they are fine) and one entry in
 // RegisteredMaterialLaws below. The Material sublist's "Law" choices and parameters, the
 // sensitivity parameters of the material and the dispatch all follow from the list.
 #pragma once
