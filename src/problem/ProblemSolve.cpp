@@ -34,7 +34,8 @@ const SolveReport& Problem::solve() {
   // falls back to the predictor and the continuation itself if that fails.
   // With complementarity walls the first solve's state is only where their Newton starts: its
   // last stage stops at kLooseFirstSolve (enterComplementarity converges it tightly).
-  const double loose = m_statusLoop->complementarity() && !m_walls.empty() ? kLooseFirstSolve : 0.0;
+  const double looseTolerance = m_assembler->hasFrictionHeat() ? kLooseFirstSolveFrictionHeat : kLooseFirstSolve;
+  const double loose = m_statusLoop->complementarity() && !m_walls.empty() ? looseTolerance : 0.0;
   m_report = m_warmStart ? solver.resolve(*m_solution, m_physics)
                          : solver.solve(*m_solution, m_physics, firstMinimum, loose);
   // The complementarity Newton continues a converged first solve. Should it fail, and the status

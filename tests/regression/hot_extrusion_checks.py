@@ -25,7 +25,7 @@ real units (docs/theory.md §10.2). What is asserted, against what flowform did 
   enters);
 - the summary's energy balance (docs/theory.md §10): η P + β P_f = Q_out + ∫ ρc u·∇T at the
   solved state within 1e-8 of the heat made (Newton leaves ~1e-15); the enthalpy through every
-  group closes it within 0.5 % (measured 0.11 % plane, 0.09 % round bar: the die lip's mass loss
+  group closes it within 0.5 % (measured 0.12 % plane, 0.09 % round bar: the die lip's mass loss
   and the lumped boundary quadrature);
 - the thermocouple (a Point Value of the temperature on the symmetry line) equals the linear
   interpolation of the axis nodes' temperatures to 1e-9.
@@ -52,7 +52,7 @@ OTHER_BOUNDARY_VALUES = ("ram/Temperature", "container/Heat Transfer Coefficient
 
 # The summary's enthalpy closure: what the discrete flow's mass loss at the die lip (div u_h != 0,
 # docs/BENCHMARKS.md §2) carries, rho c integral of (T - T_ref) div u_h, and the lumped boundary
-# quadrature's O(h^2); measured 0.11 % (plane) and 0.09 % (round bar) on the default meshes.
+# quadrature's O(h^2); measured 0.12 % (plane) and 0.09 % (round bar) on the default meshes.
 ENTHALPY_CLOSURE = 0.005
 # The thermocouple's position along the symmetry line (x of the plane section, z = y of the round bar).
 THERMOCOUPLE = {"hot_extrusion.xml": ("x", 37.5), "hot_extrusion_axisym.xml": ("y", 37.5)}

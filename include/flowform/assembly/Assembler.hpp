@@ -80,6 +80,7 @@ class Assembler {
   /// none); the row of `component` (the temperature) of each wall node gains −β g_k (u_k − v_w)·t_k,
   /// the share of the node's friction power that heats the workpiece, in both residuals.
   void setFrictionHeat(std::vector<double> fractions, int component);
+  bool hasFrictionHeat() const { return !m_frictionHeat.empty(); }
 
   /// F(x) on the owned map. With `applyConstraints` false, the rows of constrained nodes
   /// keep their momentum equations: at a prescribed-velocity node the entry is then the

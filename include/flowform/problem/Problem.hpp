@@ -161,6 +161,11 @@ class Problem {
   /// against 27, 20, 20, 23, F to 2·10⁻⁷; ν = 0, 0.3, 0.5 on (0.1, 0.025) one or two fewer; 1e-1
   /// left the axisymmetric die lip closed, F 11 % high).
   static constexpr double kLooseFirstSolve = 3e-2;
+  /// The same where walls heat the workpiece by friction: their heat at a loose state's slips throws
+  /// the temperatures off, and the complementarity Newton from there diverged (xml/hot_extrusion.xml:
+  /// 44 Newton iterations with the retry from the tight state at 3e-2; 20, 22, 23, 23 at 1e-2, 3e-3,
+  /// 1e-3, 1e-4; the round bar 30 and 18).
+  static constexpr double kLooseFirstSolveFrictionHeat = 1e-2;
   /// The last start of a first solve with Coulomb-type walls: continuation in the friction
   /// coefficients from kFrictionContinuationStart × ν up to ν; restores `initial` first. Returns
   /// whether it converged (m_report then its report; otherwise m_report keeps the failure).
