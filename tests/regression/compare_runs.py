@@ -1,8 +1,8 @@
 """Runs a case serially and on N ranks and compares solution.h5 field by field.
 
 usage: compare_runs.py FLOWFORM MPIEXEC NP CASE.xml WORKDIR [--tol TOL] [--set P=V ...]
-Passes when every nodal field, and every response's error estimate when the case asks for
-them, agrees to `tol` relative to its largest magnitude. The two
+Passes when every nodal field, every response's error estimate when the case asks for
+them, and a thermal case's energy balance agree to `tol` relative to their largest magnitude. The two
 runs solve the same linear systems (the parallel direct solve gathers to one rank), so
 only the summation order of the assembly differs: round-off, amplified by the Newton
 iterations and the condition number; 1e-9 (the default) leaves ~4 orders of magnitude over
@@ -57,6 +57,26 @@ def main():
         diff = abs(eta - other) / max(abs(eta), 1e-300) if other is not None else float("inf")
         print(f"error estimate {name}: |serial - np{nprocs}| / |serial| = {diff:.3e}")
         failed |= not diff <= tol
+    # The energy balance of a thermal case (its sums are collective: every rank computes them):
+    # each heat and enthalpy flow relative to the balance's scale, the temperature and the closure
+    # as they are. The imbalance is Newton's leftover (round-off on both sides): not compared.
+    ea, eb = sa.get("energy_balance"), sb.get("energy_balance")
+    if ea:
+        def flat(block):
+            for key, value in block.items():
+                if isinstance(value, dict):
+                    for group, v in value.items():
+                        yield f"{key}/{group}", v
+                elif isinstance(value, float):
+                    yield key, value
+        other = dict(flat(eb or {}))
+        for key, value in flat(ea):
+            if key in ("imbalance", "relative_imbalance"):
+                continue
+            scale = abs(value) if key == "reference_temperature" else 1.0 if key == "enthalpy_closure" else ea["scale"]
+            diff = abs(value - other[key]) / max(scale, 1e-300) if key in other else float("inf")
+            print(f"energy balance {key}: |serial - np{nprocs}| / scale = {diff:.3e}")
+            failed |= not diff <= tol
     # Total derivatives through moving free surfaces: central differences in the node positions
     # (step 1e-6 of the surface length) turn the assembly's round-off (1e-16) into 1e-10 of
     # each term; 1e-6 leaves that four orders of magnitude. The scale is the larger of the total
