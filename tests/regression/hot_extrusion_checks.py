@@ -90,7 +90,8 @@ def isothermal_case(source, outdir, name="hot_extrusion.xml"):
                  '      <Parameter name="Tool Temperature" type="double" value="703.0"/>           <!-- [K] -->\n',
                  '      <Parameter name="Tool Temperature" type="double" value="723.0"/>           <!-- [K] -->\n'):
         text = text.replace(line, "")
-    if any(entry in text for entry in ("Heat Transfer Coefficient", "Tool Temperature", "Friction Heat Fraction")):
+    if any(f'name="{entry}"' in text for entry in ("Heat Transfer Coefficient", "Tool Temperature",
+                                                     "Friction Heat Fraction")):
         raise SystemExit(f"xml/{name}'s tool heat transfer is no longer what this check removes")
     for name in ("exit_temperature", "centre_temperature", "max_temperature", "ram_heat", "container_heat", "die_face_heat", "die_land_heat"):
         start = text.index(f'    <ParameterList name="{name}">')
