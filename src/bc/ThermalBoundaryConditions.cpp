@@ -104,6 +104,7 @@ ThermalBoundaryConditions::ThermalBoundaryConditions(const Teuchos::ParameterLis
       // past a bound (the residual is affine in β), which is not refused here.
       if (beta != 0.0) m_frictionHeat[name] = beta;
     }
+    if (group.isParameter("Temperature")) m_groups.push_back(name);  // held (read above)
     if (!hasCoefficient) continue;
     const double h = readDouble(group, name, "Heat Transfer Coefficient");
     if (h < 0.0) throw InputError("Boundary Conditions/" + name + "/Heat Transfer Coefficient must be >= 0");
@@ -116,7 +117,10 @@ ThermalBoundaryConditions::ThermalBoundaryConditions(const Teuchos::ParameterLis
     if (!mesh.hasBoundary(name))
       throw InputError("Boundary Conditions/" + name + ": mesh '" + mesh.source +
                        "' has no boundary group of that name; it has: " + mesh.boundaryNames());
-    if (h > 0.0) m_transfer.push_back({name, h, readDouble(group, name, ambientName)});
+    if (h > 0.0) {
+      m_transfer.push_back({name, h, readDouble(group, name, ambientName)});
+      m_groups.push_back(name);
+    }
   }
 }
 

@@ -9,8 +9,8 @@
 #include "flowform/assembly/CellMaterial.hpp"
 #include "flowform/physics/ThermalProperties.hpp"
 #include "flowform/problem/Problem.hpp"
-#include "flowform/responses/FlowRate.hpp"
 #include "flowform/responses/HeatFlow.hpp"
+#include "flowform/responses/TemperatureResponses.hpp"
 #include "flowform/responses/WallPowers.hpp"
 
 namespace flowform {
@@ -44,20 +44,6 @@ double convectedHeat(const Workset& x, const Mesh& mesh, const DofMap& dofMap, G
   return local;
 }
 
-/// The groups that hold their temperature or transfer heat (a positive Heat Transfer Coefficient).
-std::vector<std::string> thermalGroups(const Teuchos::ParameterList& bcList) {
-  std::vector<std::string> groups;
-  for (auto it = bcList.begin(); it != bcList.end(); ++it) {
-    const std::string& name = bcList.name(it);
-    if (!bcList.isSublist(name)) continue;
-    const Teuchos::ParameterList& group = bcList.sublist(name);
-    if (group.isParameter("Temperature") ||
-        (group.isType<double>("Heat Transfer Coefficient") && group.get<double>("Heat Transfer Coefficient") > 0.0))
-      groups.push_back(name);
-  }
-  return groups;
-}
-
 }  // namespace
 
 EnergyBalance energyBalance(const Problem& problem) {
@@ -84,11 +70,7 @@ EnergyBalance energyBalance(const Problem& problem) {
   b.plasticHeat = thermal.heatFraction * sumOverRanks(comm, plastic);
   double made = b.plasticHeat;
   for (const ContactWall& wall : problem.contactWalls()) {
-    const double power = sumOverWallNodes(c, wall.name(), [](double& local, const ContactWall& w, int k,
-                                                             const FrictionParameters<double>& fp, const double* u,
-                                                             const double*) {
-      local += w.tangentialForce(k, fp, u) * w.relativeSlip(k, u);
-    });
+    const double power = FrictionPower::of(c, wall.name());
     b.frictionPower[wall.name()] = power;
     b.frictionHeat[wall.name()] = conditions.frictionHeatFraction(wall.name()) * power;
     made += b.frictionHeat[wall.name()];
@@ -96,7 +78,7 @@ EnergyBalance energyBalance(const Problem& problem) {
   // The heat that leaves: −R_T at the nodes of the groups that hold or transfer T (each node once
   // for the total; a node two such groups share is in both groups' Heat Flow).
   std::vector<char> thermalNode(mesh.numNodes(), 0);
-  for (const std::string& group : thermalGroups(params.sublist("Boundary Conditions"))) {
+  for (const std::string& group : conditions.heatExchangingGroups()) {
     for (const auto& edge : mesh.boundary(group).edges) thermalNode[edge[0]] = thermalNode[edge[1]] = 1;
     Teuchos::ParameterList p;
     p.set("Boundary", group);
@@ -112,12 +94,8 @@ EnergyBalance energyBalance(const Problem& problem) {
   b.heatOutTotal = sumOverRanks(comm, out);
   b.convected = sumOverRanks(comm, convectedHeat(x, mesh, dofMap, c.geometry(), rhoC));
 
-  // Per group: the flux Σ u_k·w_k and Σ T_k u_k·w_k (FlowRate's nodal weights, each node by its owner).
-  struct Crossing {
-    std::string group;
-    double flux, heat;
-  };
-  std::vector<Crossing> crossings;
+  // Per group: the flux and the temperature flux crossing it (MeanTemperature's sums).
+  std::vector<std::pair<std::string, Crossing<double>>> crossings;
   double largest = 0.0;
   for (const BoundaryGroup& group : mesh.boundaries) {
     // A group that is not one simple curve (several pieces, a branch) has no oriented normal here:
@@ -129,32 +107,24 @@ EnergyBalance energyBalance(const Problem& problem) {
       b.groupsLeftOut.push_back(group.name);
       continue;
     }
-    const auto w = FlowRate::fluxWeights(mesh, curve, c.geometry());
-    double flux = 0.0, heat = 0.0;
-    for (size_t k = 0; k < curve.nodes.size(); ++k) {
-      const LO n = dofMap.overlapIndex(curve.nodes[k]);
-      if (!dofMap.ownsNode(n)) continue;
-      const double q = w[k][0] * c.u(x, n, kUx) + w[k][1] * c.u(x, n, kUy);
-      flux += q;
-      heat += q * c.u(x, n, t);
-    }
-    crossings.push_back({group.name, sumOverRanks(comm, flux), sumOverRanks(comm, heat)});
-    largest = std::max(largest, std::abs(crossings.back().flux));
+    crossings.emplace_back(group.name, crossing(c, curve, t));
+    largest = std::max(largest, std::abs(crossings.back().second.flux));
   }
   // T_ref: the mixing-cup temperature of what enters through the groups that carry material in
   // (a wall's flux is the penalty's small penetration: below 1e-3 of the largest, left out).
   double inFlux = 0.0, inHeat = 0.0;
-  for (const Crossing& g : crossings)
-    if (g.flux < -1e-3 * largest) {
-      inFlux += g.flux;
-      inHeat += g.heat;
+  for (const auto& [group, through] : crossings)
+    if (through.flux < -1e-3 * largest) {
+      inFlux += through.flux;
+      inHeat += through.temperatureFlux;
     }
   b.referenceTemperature = inFlux < 0.0 ? inHeat / inFlux : 0.0;
   double enthalpy = 0.0;
-  for (const Crossing& g : crossings) {
-    b.enthalpyFlow[g.group] = rhoC * (g.heat - b.referenceTemperature * g.flux);
-    enthalpy += b.enthalpyFlow[g.group];
+  for (const auto& [group, through] : crossings) {
+    b.enthalpyFlow[group] = rhoC * (through.temperatureFlux - b.referenceTemperature * through.flux);
+    enthalpy += b.enthalpyFlow[group];
   }
+  b.heatMade = made;
   b.imbalance = made - b.heatOutTotal - b.convected;
   b.massLossTerm = b.convected - enthalpy;
   // The balance's scale: the largest of its flows (the heat made is 0 in a case without heating
@@ -167,16 +137,11 @@ EnergyBalance energyBalance(const Problem& problem) {
 }
 
 void EnergyBalance::report(nlohmann::json& summary) const {
-  const double made = plasticHeat + [&] {
-    double s = 0.0;
-    for (const auto& [wall, q] : frictionHeat) s += q;
-    return s;
-  }();
   summary["energy_balance"] = {{"reference_temperature", referenceTemperature},
                                {"plastic_heat", plasticHeat},
                                {"friction_power", frictionPower},
                                {"friction_heat", frictionHeat},
-                               {"heat_made", made},
+                               {"heat_made", heatMade},
                                {"heat_out", heatOut},
                                {"heat_out_total", heatOutTotal},
                                {"enthalpy_flow", enthalpyFlow},

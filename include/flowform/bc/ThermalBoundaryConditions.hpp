@@ -57,6 +57,9 @@ class ThermalBoundaryConditions {
   /// The transferring edges that are an edge of one of this rank's cells (each edge once over
   /// the ranks).
   std::vector<TransferEdge> transferEdges(const Mesh& mesh, const DofMap& dofMap) const;
+  /// The groups that hold their temperature or transfer heat (a positive coefficient), in the
+  /// case's order.
+  const std::vector<std::string>& heatExchangingGroups() const { return m_groups; }
   /// β of the contact wall called `wall` (0 when it gives none).
   double frictionHeatFraction(const std::string& wall) const;
 
@@ -67,6 +70,7 @@ class ThermalBoundaryConditions {
   };
   std::vector<NodeTemperature> m_prescribed;
   std::vector<Transfer> m_transfer;
+  std::vector<std::string> m_groups;  ///< heatExchangingGroups()
   std::map<std::string, double> m_frictionHeat;  ///< wall -> β ≠ 0
 };
 

@@ -34,6 +34,7 @@ struct EnergyBalance {
   double plasticHeat = 0.0;                    ///< η ∫ s:D dΩ
   std::map<std::string, double> frictionPower; ///< per contact wall: P_f = Σ_k g_k (u_k − v_w)·t_k
   std::map<std::string, double> frictionHeat;  ///< per contact wall: β P_f, the share the metal keeps
+  double heatMade = 0.0;                       ///< η P + Σ β P_f
   std::map<std::string, double> heatOut;       ///< per group that holds or transfers T: its Heat Flow
   double heatOutTotal = 0.0;                   ///< Q_out: −Σ R_T over those groups' nodes (each once)
   std::map<std::string, double> enthalpyFlow;  ///< per boundary group through which material flows: E_g

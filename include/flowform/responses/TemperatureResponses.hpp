@@ -29,6 +29,27 @@ inline int temperatureComponent(const DofMap& dofMap, const std::string& who) {
   return t;
 }
 
+/// What crosses a boundary curve, summed over the ranks: the flux Q = Σ_k u_k·w_k and the
+/// temperature flux Σ_k T_k u_k·w_k (w_k the Flow Rate's nodal weights, FlowRate.hpp; each node by
+/// its owner; t the Temperature component).
+template <typename Scalar>
+struct Crossing {
+  Scalar flux, temperatureFlux;
+};
+template <typename Scalar>
+Crossing<Scalar> crossing(const ResponseContext<Scalar>& c, const BoundaryCurve& curve, int t) {
+  const auto w = FlowRate::fluxWeights(c.mesh, curve, c.geometry());
+  Scalar heat = 0.0, flux = 0.0;
+  for (size_t k = 0; k < curve.nodes.size(); ++k) {
+    const LO n = c.dofMap.overlapIndex(curve.nodes[k]);
+    if (!c.dofMap.ownsNode(n)) continue;  // each node by its owner
+    const Scalar q = w[k][0] * c.u(c.x, n, kUx) + w[k][1] * c.u(c.x, n, kUy);
+    flux += q;
+    heat += q * c.u(c.x, n, t);
+  }
+  return {sumOverRanks(*c.dofMap.comm(), flux), sumOverRanks(*c.dofMap.comm(), heat)};
+}
+
 struct MeanTemperature {
   static constexpr const char* kName = "Mean Temperature";
   static constexpr const char* kDescription =
@@ -45,17 +66,8 @@ struct MeanTemperature {
   template <typename Scalar>
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
     const int t = temperatureComponent(c.dofMap, std::string("the Mean Temperature of '") + m_boundary + "'");
-    const BoundaryCurve curve = buildBoundaryCurve(c.mesh, c.mesh.boundary(m_boundary));
-    const auto w = FlowRate::fluxWeights(c.mesh, curve, c.geometry());
-    Scalar heat = 0.0, flux = 0.0;
-    for (size_t k = 0; k < curve.nodes.size(); ++k) {
-      const LO n = c.dofMap.overlapIndex(curve.nodes[k]);
-      if (!c.dofMap.ownsNode(n)) continue;  // each node by its owner
-      const Scalar q = w[k][0] * c.u(c.x, n, kUx) + w[k][1] * c.u(c.x, n, kUy);
-      flux += q;
-      heat += q * c.u(c.x, n, t);
-    }
-    return sumOverRanks(*c.dofMap.comm(), heat) / sumOverRanks(*c.dofMap.comm(), flux);
+    const Crossing<Scalar> through = crossing(c, buildBoundaryCurve(c.mesh, c.mesh.boundary(m_boundary)), t);
+    return through.temperatureFlux / through.flux;
   }
 
  private:

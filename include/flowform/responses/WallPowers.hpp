@@ -83,8 +83,13 @@ struct FrictionPower {
 
   template <typename Scalar>
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
-    return sumOverWallNodes(c, "", [&](Scalar& local, const ContactWall& wall, int k,
-                                       const FrictionParameters<Scalar>& fp, const Scalar* u, const Scalar*) {
+    return of(c, "");
+  }
+  /// The friction power of wall `only` (every wall when empty).
+  template <typename Scalar>
+  static Scalar of(const ResponseContext<Scalar>& c, const std::string& only) {
+    return sumOverWallNodes(c, only, [&](Scalar& local, const ContactWall& wall, int k,
+                                         const FrictionParameters<Scalar>& fp, const Scalar* u, const Scalar*) {
       const Scalar g = wall.tangentialForce(k, fp, u);
       local += g * wall.relativeSlip(k, u);
     });
