@@ -7,7 +7,6 @@
 # Default-run tests use h >= 0.1 (each well under a minute on 2 cores); the finer meshes
 # are labelled slow (ctest -L slow).
 
-set(FLOWFORM_PYTHON /usr/bin/python3)  # Debian's, where numpy and h5py are installed
 set(FLOWFORM_EXTRUSION_CHECKS ${CMAKE_CURRENT_SOURCE_DIR}/regression/extrusion_checks.py)
 
 # flowform_extrusion_test(NAME SUBCOMMAND [LABEL regression|slow] [TIMEOUT s] [ARGS ...])

@@ -2,7 +2,6 @@
 # and power on the moved mesh, the shear-thinning trend, the iteration cap, the extrusion with a
 # separating die land (leak, gap, adaptive force against the bilateral land), sensitivities on a
 # moving shape, bad input.
-set(FLOWFORM_PYTHON /usr/bin/python3)
 add_test(NAME free_surface_checks
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/free_surface_checks.py
                  $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/free_surface)

@@ -2,7 +2,6 @@
 # one subcommand of regression/moving_tool_checks.py (the derivations and tolerances are in its
 # docstring and in docs/verification.md). The bad input and the power balance with a moving
 # container are in BadInput.cmake and PowerBalance.cmake.
-set(FLOWFORM_PYTHON /usr/bin/python3)
 foreach(sub couette container)
   add_test(NAME moving_tool_${sub}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/moving_tool_checks.py ${sub}

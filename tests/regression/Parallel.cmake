@@ -1,5 +1,4 @@
 # A whole run on 2 ranks equals the serial run (nonlinear channel, both element types).
-set(FLOWFORM_PYTHON /usr/bin/python3)  # Debian's, where python3-h5py is installed
 foreach(cell Triangle Quadrilateral)
   add_test(NAME parallel_equals_serial_${cell}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/compare_runs.py

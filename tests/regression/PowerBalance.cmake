@@ -2,7 +2,6 @@
 # (Coulomb ν = 0.1, plane strain), without, axisymmetric, and on the mesh a free surface moved
 # (the separating die land, docs/theory.md §3.4: the traction-free surface adds no power); and with a
 # moving tool (the container translating at the ram speed, Coulomb ν = 0.1: its Tool Power enters).
-set(FLOWFORM_PYTHON /usr/bin/python3)
 foreach(variant coulomb frictionless axisymmetric separating_land moving_container)
   set(case ${FLOWFORM_SOURCE_DIR}/xml/extrusion.xml)
   set(extra --set "Adaptivity/Enabled=false")  # the scene's own mesh, solved once

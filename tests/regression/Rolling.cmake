@@ -1,7 +1,6 @@
 # Rolling (docs/rolling.md): the strip nobody pushes under one roll, xml/rolling.xml. Each test is one
 # subcommand of regression/rolling_checks.py (the checks, their tolerances and the measured values are
 # in its docstring); rolling_scene_perturbed expects the neutral point inside a 1° arc and must fail.
-set(FLOWFORM_PYTHON /usr/bin/python3)
 foreach(sub scene tension free_surfaces geometry shape bite bad_input)
   add_test(NAME rolling_${sub}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/rolling_checks.py ${sub}

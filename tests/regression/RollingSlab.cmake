@@ -3,7 +3,6 @@
 # run's own pass (regression/rolling_slab_checks.py: the bands, the trends, the hill's peak in the
 # neutral zone, the entry surface's leak). `nu` (2 runs) is in the default run; `geometry` (3 runs)
 # and `sticking` (ν = 2) are slow. rolling_slab_perturbed compares with the slab at 1.5 ν and must fail.
-set(FLOWFORM_PYTHON /usr/bin/python3)
 foreach(sub nu geometry sticking)
   add_test(NAME rolling_slab_${sub}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/rolling_slab_checks.py ${sub}

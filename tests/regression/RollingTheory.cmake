@@ -2,7 +2,6 @@
 # against closed forms it does not compute itself (Bland & Ford, Sims, the frictionless drawing
 # solution, Tresca's closed neutral point), exact identities (power, mass) and Hill's fit within
 # its range (regression/rolling_theory_checks.py). No flowform run: numpy only, a few seconds.
-set(FLOWFORM_PYTHON /usr/bin/python3)  # Debian's, with numpy
 add_test(NAME rolling_theory
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/rolling_theory_checks.py)
 set_tests_properties(rolling_theory PROPERTIES LABELS "regression" TIMEOUT 60)

@@ -4,7 +4,6 @@
 # central difference of two independent full runs, with the walls' Penalty Viscosity fixed
 # (the adaptive penalty scales depend on the solution, which the DDM holds fixed). Each test is one subcommand
 # of regression/sensitivity_checks.py (tolerances justified there and in docs/sensitivity.md).
-set(FLOWFORM_PYTHON /usr/bin/python3)  # Debian's, with h5py
 foreach(sub channel extrusion external one-sided no-work shape)
   add_test(NAME sensitivity_${sub}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/sensitivity_checks.py ${sub}

@@ -7,7 +7,6 @@
 # front tension 0.3 (docs/rolling.md §9).
 # grid (label slow): the channel over γ ∈ {1e-3, 1, 1e3, 1e6} × e0 ∈ {1e-6, 1e-4, 1e-2} ×
 # n ∈ {1, 5, 100}; the extrusion (plane, axisymmetric) over ν ∈ {0, 0.5, 1, 2, 5} × κ_t ∈ {10, 1e4, 1e8}.
-set(FLOWFORM_PYTHON /usr/bin/python3)
 foreach(group channel extrusion rolling grid)
   add_test(NAME stress_${group}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/stress_checks.py ${group}

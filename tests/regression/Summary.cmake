@@ -1,5 +1,4 @@
 # What a run costs and reports, read from summary.json.
-set(FLOWFORM_PYTHON /usr/bin/python3)
 # A Newtonian case (n = 1, σ0 = 0) is linear: one factorization, one solve, no Newton.
 add_test(NAME newtonian_costs_one_solve
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_summary.py

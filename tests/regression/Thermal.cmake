@@ -1,7 +1,6 @@
 # The Temperature field (Material/Thermal, docs/theory.md §10): the exact fully developed channel
 # with plastic heating (orders, energy balance; thermal_channel_checks.py), its adiabatic limit, a case without the
 # sublist has no temperature unknowns, and the thermal input errors (exit 2, nothing written).
-set(FLOWFORM_PYTHON /usr/bin/python3)
 foreach(what convergence adiabatic transfer isothermal)
   add_test(NAME thermal_channel_${what}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/thermal_channel_checks.py ${what}

@@ -37,6 +37,7 @@
 #include "flowform/responses/MeanPressure.hpp"
 #include "flowform/responses/NeutralAngle.hpp"
 #include "flowform/responses/PointValue.hpp"
+#include "flowform/responses/RedundantWorkFactor.hpp"
 #include "flowform/responses/ShearAngle.hpp"
 #include "flowform/responses/TemperatureResponses.hpp"
 #include "flowform/responses/ThicknessRatio.hpp"
@@ -55,7 +56,7 @@ using RegisteredResponses =
     ResponseList<BoundaryForce, MeanPressure, BoundaryPower, FlowRate, PlasticPower, FrictionPower, PenaltyPower,
                  StabilizationPower, DeadZone, BoundaryExtent, WallGap, ContactLength, WallForce, ThicknessRatio,
                  ShearAngle, ToolPower, ToolTorque, NeutralAngle, ForwardSlip, HeatFlow,
-                 MeanTemperature, MaximumTemperature, PointValue>;
+                 MeanTemperature, MaximumTemperature, PointValue, WallPressure, RedundantWorkFactor>;
 
 /// A type's static facts, by its index in RegisteredResponses.
 struct ResponseTypeInfo {

@@ -5,6 +5,8 @@
 //                   it, a tool's cutting (X) and thrust (Y) forces; by the balance of the whole
 //                   body, the sum of the Boundary Forces on the velocity-driven groups when the
 //                   rest is traction-free
+//   Wall Pressure   Σ R_k·n_k / A over the named wall (A its length, or area ∫ 2πr ds when
+//                   axisymmetric): the mean normal pressure on the tool, e.g. a drawing die's
 //   Friction Power  Σ g_k (u − v_w)·t_k over the active nodes of every wall: the friction
 //                   dissipation (g_k times the relative slip)
 //   Penalty Power   Σ (normal part of R_k)·(u − v_w) = α_n ((u − v_w)·n)²: the work of the normal penalty
@@ -69,6 +71,32 @@ struct WallForce {
  private:
   std::string m_wall;
   int m_component;
+};
+
+struct WallPressure {
+  static constexpr const char* kName = "Wall Pressure";
+  static constexpr const char* kDescription =
+      "sum of R_k.n_k over a contact wall's nodes divided by its length (area 2 pi r ds when axisymmetric): the mean "
+      "normal pressure on the tool";
+  static constexpr bool kNeedsBoundary = true, kNeedsWall = true, kReactionBased = false, kAdaptivityTarget = false,
+                        kDifferentiable = true;
+
+  static void declareParameters(Teuchos::ParameterList& list) { declareBoundary(list, "the contact wall"); }
+  explicit WallPressure(const Teuchos::ParameterList& p) : m_wall(p.get<std::string>("Boundary")) {}
+
+  template <typename Scalar>
+  Scalar evaluate(const ResponseContext<Scalar>& c) const {
+    const Scalar force = sumOverWallNodes(c, m_wall, [&](Scalar& local, const ContactWall& wall, int k,
+                                                         const FrictionParameters<Scalar>&, const Scalar*,
+                                                         const Scalar* Rk) {
+      const auto& n = wall.curve().normals[k];
+      local += Rk[0] * n[0] + Rk[1] * n[1];
+    });
+    return force / curveArea(c.mesh, wallNamed(c.walls, m_wall).curve(), c.geometry());
+  }
+
+ private:
+  std::string m_wall;
 };
 
 struct FrictionPower {
