@@ -38,6 +38,7 @@ STAGES = [
     ["sensitivity"],          # DDM, the total shape derivative, the finite-difference check
     ["estimation"],           # the two-level error estimate, adaptivity
     ["io"],                   # writers and readers of files
+    ["optimization"],         # design and inverse problems on ROL: runs of the case at designs
     ["drivers"],              # the case, the run (Simulation), main.cpp
 ]
 # The mesher program: gmsh only, no Trilinos; it shares plain data with the library.

@@ -22,6 +22,8 @@
 #include "flowform/drivers/Simulation.hpp"
 #include "flowform/io/CaseFile.hpp"
 #include "flowform/io/ResultDirectory.hpp"
+#include "flowform/optimization/OptimizationLoop.hpp"
+#include "flowform/optimization/OptimizationSettings.hpp"
 
 namespace {
 
@@ -141,6 +143,12 @@ int main(int argc, char* argv[]) {
       }
       return status;
     };
+    if (flowform::optimizationRequested(*params)) {
+      std::string message;
+      const int status = flowform::runOptimization(
+          *params, flowform::Simulation::factory(baseDir.empty() ? "." : baseDir, comm), outDir, &message);
+      return finish(status, message);
+    }
     if (flowform::adaptivityRequested(*params)) {
       std::string message;
       const int status = flowform::runAdaptive(

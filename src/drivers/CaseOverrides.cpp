@@ -106,6 +106,14 @@ void applyOverride(Teuchos::ParameterList& params, const std::string& assignment
     target->set(name, value);
   } else if (like && like->isType<Teuchos::Array<std::string>>()) {
     target->set(name, parseStringArray(value));
+  } else if (like && like->isType<Teuchos::Array<double>>()) {  // "{0.1, 2}": each a finite number
+    Teuchos::Array<double> numbers;
+    for (const std::string& item : parseStringArray(value)) {
+      double v;
+      if (!parseExactly(item, v)) fail("list of doubles (finite decimal numbers)");
+      numbers.push_back(v);
+    }
+    target->set(name, numbers);
   } else if (like) {
     throw InputError("--set '" + assignment + "': parameter of type " + like->getAny().typeName() +
                      " cannot be set from the command line");

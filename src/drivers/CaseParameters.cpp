@@ -1,4 +1,5 @@
 #include "flowform/drivers/CaseParameters.hpp"
+#include "flowform/optimization/OptimizationSettings.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -216,6 +217,9 @@ static void buildValidCaseParameters(const ValidList& valid) {
              "a Free Surface or a Contact Wall's Released Nodes are Free Surface");
   valid->set("Sensitivity", *Sensitivity::validParameters(),
              "sensitivities by direct differentiation and their finite-difference check (docs/theory.md §4)");
+  valid->set("Optimization", *OptimizationSettings::validParameters(),
+             "design and inverse problems on Trilinos ROL (docs/optimization.md): design parameters with bounds, "
+             "a response to minimize or maximize or a misfit to measured values; no sublist: nothing of this runs");
   valid->sublist("Regression", false, "expected values for a regression checker");
 }
 
@@ -275,6 +279,12 @@ void validateCase(ParameterList& params) {
     validateSublist(params.sublist("Sensitivity"), valid.sublist("Sensitivity"), "Sensitivity");
   if (params.isSublist("Adaptivity"))
     validateSublist(params.sublist("Adaptivity"), valid.sublist("Adaptivity"), "Adaptivity");
+  if (optimizationRequested(params)) {
+    validateSublist(params.sublist("Optimization"), valid.sublist("Optimization"), "Optimization");
+    if (adaptivityRequested(params))
+      throw InputError("Optimization with Adaptivity: each design is solved on the case's own mesh; set "
+                       "Adaptivity/Enabled=false (or remove the Adaptivity sublist)");
+  }
   if (adaptivityRequested(params)) {
     auto targets = params.sublist("Adaptivity").get<Teuchos::Array<std::string>>("Responses");
     const auto derivatives = params.sublist("Adaptivity").get<Teuchos::Array<std::string>>("Sensitivities");

@@ -53,6 +53,13 @@ Teuchos::RCP<const Teuchos::ParameterList> validMeshParameters() {
       "DefineConstant[ NAME = {default, Name \"Parameters/NAME\"} ];. A NAME the .geo does not "
       "define that way is an error.");
   geo.disableRecursiveValidation();  // its entries are the .geo's names, checked in readMesh
+  Teuchos::ParameterList& reference = pl->sublist(
+      "Reference Geo Parameters", false,
+      "Geo Parameters whose mesh gives the topology (docs/optimization.md §2): the .geo is meshed with these "
+      "values (over Geo Parameters), then its nodes are moved to the shape at Geo Parameters, each boundary group's "
+      "nodes by arc length between its corners, the interior by the harmonic extension. Empty: the mesh at Geo "
+      "Parameters itself. The optimizer sets it to keep one topology across the designs of a shape parameter");
+  reference.disableRecursiveValidation();
   return pl;
 }
 

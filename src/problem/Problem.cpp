@@ -7,6 +7,7 @@
 #include "flowform/contact/WallStates.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/discretization/SolutionTransfer.hpp"
+#include "flowform/freesurface/ReferenceTopology.hpp"
 #include "flowform/mesh/MeshReader.hpp"
 #include "flowform/physics/kernels/EnergyKernel.hpp"
 #include "flowform/physics/kernels/FlowKernel.hpp"
@@ -22,7 +23,7 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
     : m_params(caseParams), m_comm(comm), m_baseDir(baseDir), m_physics(physics) {
   if (sizeField) m_sizeField = *sizeField;
 
-  m_mesh = readMesh(m_params.sublist("Mesh"), baseDir, *comm, sizeField);
+  m_mesh = readMeshOnReference(m_params.sublist("Mesh"), baseDir, *comm, sizeField);
   m_madeCoords = m_mesh.coords;
   if (m_physics.kernel.geometry == Geometry::Axisymmetric)
     for (const auto& xy : m_mesh.coords)
@@ -135,11 +136,23 @@ NonlinearSolver Problem::newtonSolver(bool refreshScales) {
   return solver;
 }
 
-void Problem::startFrom(const Problem& other, bool decideZoneLimits) {
+void Problem::startFrom(const Problem& other, bool decideZoneLimits, bool carryShapes) {
   // The other mesh's free surfaces moved: this mesh, as made, takes their shape first (carryShape),
   // and the groups it released after its first loop are released here from the start.
-  if (other.m_mesh.coords != other.m_madeCoords)
+  if (carryShapes && other.m_mesh.coords != other.m_madeCoords) {
     moveNodes(carryShape(other.meshAsMade(), other.mesh(), meshAsMade()));
+  } else if (other.m_mesh.coords != other.m_madeCoords && other.m_mesh.cellNodes == m_mesh.cellNodes) {
+    // Another shape on this topology (a design of the optimizer): the free surfaces' displacement
+    // node by node, unless it inverts a cell here (then they start as made).
+    std::vector<std::array<double, 2>> coords = m_madeCoords;
+    for (std::size_t n = 0; n < coords.size(); ++n)
+      for (int d = 0; d < 2; ++d) coords[n][d] += other.m_mesh.coords[n][d] - other.m_madeCoords[n][d];
+    try {
+      moveNodes(coords);
+    } catch (const InputError&) {
+      moveNodes(m_madeCoords);
+    }
+  }
   if (!other.m_bcs->releasedGroups().empty()) m_bcs->releaseHeld(m_mesh);
   // A rigid inflow starts at the speed the other mesh found.
   if (!m_bcs->rigidInflow().group.empty()) m_bcs->setRigidInflowSpeed(m_mesh, other.m_bcs->rigidInflow().speed);

@@ -7,6 +7,7 @@
 #include "flowform/core/Log.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
 #include "flowform/mesh/BoundaryCurve.hpp"
+#include "flowform/freesurface/ReferenceTopology.hpp"
 #include "flowform/mesh/MeshReader.hpp"
 #include "flowform/problem/Problem.hpp"
 #include "flowform/sensitivity/BoundaryValuePartials.hpp"
@@ -29,10 +30,17 @@ std::vector<std::array<double, 2>> meshedAt(const Problem& problem, const std::s
   Teuchos::ParameterList meshList = problem.parameters().sublist("Mesh");
   meshList.sublist("Geo Parameters").set(name, value);
   const SizeField& sizes = problem.sizeField();
-  const Mesh other = readMesh(meshList, problem.baseDirectory(), *problem.comm(), sizes.empty() ? nullptr : &sizes);
+  const Mesh other =
+      readMeshOnReference(meshList, problem.baseDirectory(), *problem.comm(), sizes.empty() ? nullptr : &sizes);
   const Mesh made = problem.meshAsMade();
   const std::string where = "Sensitivity/Parameters: 'Geo Parameter:" + name + "': meshed at " + name + " = " +
                             std::to_string(value) + ", ";
+  // On a reference topology (Mesh/Reference Geo Parameters, freesurface/ReferenceTopology) both
+  // meshes are the reference's moved: every node is followed, the interior too, so that V is the
+  // derivative of the very map that made this mesh.
+  const bool onReference =
+      meshList.isSublist("Reference Geo Parameters") && meshList.sublist("Reference Geo Parameters").numParams() > 0;
+  if (onReference && other.cellNodes == made.cellNodes) return other.coords;
   // Boundary nodes: the k-th node along each group in the other mesh is the k-th here.
   std::vector<std::array<double, 2>> displacement(made.numNodes(), {0.0, 0.0});
   std::vector<char> prescribed(made.numNodes(), 0);

@@ -87,7 +87,9 @@ class Problem {
   /// active if it penetrates at the interpolated state), the penalty scales from that state.
   /// solve() then re-solves from there, without the continuation (it falls back to it only if
   /// Newton fails).
-  void startFrom(const Problem& other, bool decideZoneLimits = true);
+  /// `carryShapes` false: this mesh keeps its free surfaces as made (another domain's, e.g. a
+  /// design whose shape parameter moved the tools: their shape would not fit this one).
+  void startFrom(const Problem& other, bool decideZoneLimits = true, bool carryShapes = true);
 
   /// Moves the mesh nodes to `coords` (same topology; every cell must stay positively
   /// oriented, else InputError naming the cell) and refreshes what caches geometry: the

@@ -1,0 +1,47 @@
+// The design of an optimization (docs/optimization.md): sensitivity parameters (the names of
+// Sensitivity/Parameters, docs/sensitivity.md) that the optimizer moves, each tied to the case
+// entries that hold its value:
+//   Geo Parameter:<name>            Mesh/Geo Parameters/<name>
+//   Boundary Value:<group>/<entry>  Boundary Conditions/<group>/<entry>
+//   Friction Coefficient[:<wall>]   Boundary Conditions/<wall>/Friction Coefficient (every wall that
+//   Shear Factor[:<wall>]           gives it, moved together, without a wall name), the same for m
+//   Thermal:<property>              Material/Thermal/<property>
+//   <a law's constant>              Material/<name>
+// Each starts from the case's value, which must lie within its bounds.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+namespace flowform {
+
+class DesignParameters {
+ public:
+  /// `names` from Optimization/Design Parameters; the case's entries that hold each (InputError
+  /// naming the parameter when the case gives none, or gives a "moved together" value unequal
+  /// on its walls).
+  DesignParameters(const std::vector<std::string>& names, const Teuchos::ParameterList& caseParams);
+
+  const std::vector<std::string>& names() const { return m_names; }
+  std::size_t size() const { return m_names.size(); }
+  /// Whether a design parameter is a Geo Parameter (the domain changes from design to design).
+  bool movesShape() const;
+  /// The Geo Parameters among the design with their starting values (the reference topology).
+  std::vector<std::pair<std::string, double>> referenceGeoParameters() const;
+  /// The case's own values (the start).
+  const std::vector<double>& initial() const { return m_initial; }
+  /// A copy of the case's parameters with the design `values` written into their entries.
+  Teuchos::ParameterList applied(const Teuchos::ParameterList& caseParams, const std::vector<double>& values) const;
+
+ private:
+  /// Every entry of one parameter: the path of sublists, then the entry's name.
+  using Path = std::vector<std::string>;
+  std::vector<std::string> m_names;
+  std::vector<std::vector<Path>> m_paths;
+  std::vector<double> m_initial;
+};
+
+}  // namespace flowform

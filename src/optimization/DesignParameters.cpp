@@ -1,0 +1,106 @@
+#include "flowform/optimization/DesignParameters.hpp"
+
+#include <cmath>
+
+#include "flowform/core/InputError.hpp"
+
+namespace flowform {
+
+using Teuchos::ParameterList;
+
+namespace {
+
+const ParameterList* sublistAt(const ParameterList& root, const std::vector<std::string>& path) {
+  const ParameterList* list = &root;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    if (!list->isSublist(path[i])) return nullptr;
+    list = &list->sublist(path[i]);
+  }
+  return list;
+}
+
+std::string joinedPath(const std::vector<std::string>& path) {
+  std::string s;
+  for (const auto& p : path) s += (s.empty() ? "" : "/") + p;
+  return s;
+}
+
+/// The case entries that hold parameter `name` (maybe none).
+std::vector<std::vector<std::string>> entriesOf(const std::string& name, const ParameterList& caseParams) {
+  const std::size_t colon = name.find(':');
+  const std::string base = name.substr(0, colon), rest = colon == std::string::npos ? "" : name.substr(colon + 1);
+  if (base == "Geo Parameter") return {{"Mesh", "Geo Parameters", rest}};
+  if (base == "Thermal") return {{"Material", "Thermal", rest}};
+  if (base == "Boundary Value") {
+    const std::size_t slash = rest.find('/');
+    if (slash == std::string::npos) return {};
+    return {{"Boundary Conditions", rest.substr(0, slash), rest.substr(slash + 1)}};
+  }
+  if (base == "Friction Coefficient" || base == "Shear Factor") {
+    if (!rest.empty()) return {{"Boundary Conditions", rest, base}};
+    std::vector<std::vector<std::string>> walls;
+    if (!caseParams.isSublist("Boundary Conditions")) return walls;
+    const ParameterList& conditions = caseParams.sublist("Boundary Conditions");
+    for (auto it = conditions.begin(); it != conditions.end(); ++it) {
+      const std::string& group = conditions.name(it);
+      if (conditions.isSublist(group) && conditions.sublist(group).isParameter(base))
+        walls.push_back({"Boundary Conditions", group, base});
+    }
+    return walls;
+  }
+  return {{"Material", name}};
+}
+
+}  // namespace
+
+DesignParameters::DesignParameters(const std::vector<std::string>& names, const ParameterList& caseParams)
+    : m_names(names) {
+  for (const std::string& name : names) {
+    const std::string where = "Optimization/Design Parameters: '" + name + "'";
+    const auto paths = entriesOf(name, caseParams);
+    if (paths.empty())
+      throw InputError(where + ": the case gives no value for it to start from (a friction parameter needs a "
+                       "contact wall that sets it; a Boundary Value is 'group/entry')");
+    double start = 0.0;
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+      const ParameterList* list = sublistAt(caseParams, paths[i]);
+      if (!list || !list->isType<double>(paths[i].back()))
+        throw InputError(where + ": the case does not set " + joinedPath(paths[i]) +
+                         " (the design starts from the case's value: give it there)");
+      const double value = list->get<double>(paths[i].back());
+      if (i == 0) start = value;
+      else if (value != start)
+        throw InputError(where + " moves every wall's value together, but " + joinedPath(paths[0]) + " = " +
+                         std::to_string(start) + " and " + joinedPath(paths[i]) + " = " + std::to_string(value) +
+                         ": design each wall's own ('" + name + ":<wall>')");
+    }
+    m_paths.push_back(paths);
+    m_initial.push_back(start);
+  }
+}
+
+bool DesignParameters::movesShape() const {
+  for (const std::string& name : m_names)
+    if (name.rfind("Geo Parameter:", 0) == 0) return true;
+  return false;
+}
+
+std::vector<std::pair<std::string, double>> DesignParameters::referenceGeoParameters() const {
+  std::vector<std::pair<std::string, double>> reference;
+  for (std::size_t i = 0; i < m_names.size(); ++i)
+    if (m_names[i].rfind("Geo Parameter:", 0) == 0) reference.emplace_back(m_names[i].substr(14), m_initial[i]);
+  return reference;
+}
+
+ParameterList DesignParameters::applied(const ParameterList& caseParams, const std::vector<double>& values) const {
+  ParameterList copy = caseParams;
+  for (std::size_t p = 0; p < m_paths.size(); ++p)
+    for (const auto& path : m_paths[p]) {
+      ParameterList* list = &copy;
+      for (std::size_t i = 0; i + 1 < path.size(); ++i) list = &list->sublist(path[i]);
+      list->set(path.back(), values[p]);
+    }
+  return copy;
+}
+
+}  // namespace flowform

@@ -1,0 +1,270 @@
+#include "flowform/optimization/OptimizationLoop.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <ROL_Bounds.hpp>
+#include <ROL_OptimizationProblem.hpp>
+#include <ROL_OptimizationSolver.hpp>
+#include <ROL_StdVector.hpp>
+#include <nlohmann/json.hpp>
+
+#include "flowform/core/InputError.hpp"
+#include "flowform/core/Log.hpp"
+#include "flowform/optimization/DesignObjective.hpp"
+#include "flowform/optimization/DesignParameters.hpp"
+#include "flowform/optimization/DesignRuns.hpp"
+#include "flowform/optimization/OptimizationSettings.hpp"
+
+namespace flowform {
+
+namespace {
+
+/// A cycle that moved a shape parameter by more than this fraction of its bounds' range is
+/// followed by one on a mesh made at its result: the moved mesh keeps the start's resolution, and
+/// so its discretization error (1.2 % of the drawing force from 14° to 7.8°, docs/optimization.md).
+constexpr double kRemeshDistance = 0.02;
+
+ROL::Ptr<ROL::StdVector<double>> stdVector(const std::vector<double>& v) {
+  return ROL::makePtr<ROL::StdVector<double>>(ROL::makePtr<std::vector<double>>(v));
+}
+
+/// ROL's parameters from the settings (ROL's own examples are the reference: packages/rol/example).
+Teuchos::ParameterList rolParameters(const OptimizationSettings& s) {
+  Teuchos::ParameterList list("ROL");
+  list.sublist("General").set("Output Level", 0);
+  Teuchos::ParameterList& secant = list.sublist("General").sublist("Secant");
+  secant.set("Type", "Limited-Memory BFGS");
+  secant.set("Maximum Storage", 10);
+  secant.set("Use as Hessian", !s.isMisfit());  // the misfit has Gauss-Newton's
+  Teuchos::ParameterList& step = list.sublist("Step");
+  step.set("Type", s.algorithm);
+  Teuchos::ParameterList& region = step.sublist("Trust Region");
+  region.set("Subproblem Solver", "Truncated CG");
+  region.set("Initial Radius", s.initialRadius);
+  Teuchos::ParameterList& descent = step.sublist("Line Search").sublist("Descent Method");
+  descent.set("Type", s.isMisfit() ? "Newton-Krylov" : "Quasi-Newton Method");
+  Teuchos::ParameterList& status = list.sublist("Status Test");
+  status.set("Gradient Tolerance", s.gradientTolerance);
+  status.set("Step Tolerance", s.stepTolerance);
+  status.set("Iteration Limit", s.iterationLimit);
+  return list;
+}
+
+/// (AᵀA)⁻¹ by Cholesky (n small: the design's size); empty when AᵀA is not positive definite
+/// (the data do not determine every design parameter).
+std::vector<std::vector<double>> gaussNewtonCovariance(const std::vector<std::vector<double>>& A, std::size_t n) {
+  std::vector<std::vector<double>> M(n, std::vector<double>(n, 0.0)), L = M, inv = M;
+  for (const auto& row : A)
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) M[i][j] += row[i] * row[j];
+  double largest = 0.0;
+  for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, M[i][i]);
+  for (std::size_t j = 0; j < n; ++j) {
+    double d = M[j][j];
+    for (std::size_t k = 0; k < j; ++k) d -= L[j][k] * L[j][k];
+    if (!(d > 1e-12 * largest)) return {};
+    L[j][j] = std::sqrt(d);
+    for (std::size_t i = j + 1; i < n; ++i) {
+      double v = M[i][j];
+      for (std::size_t k = 0; k < j; ++k) v -= L[i][k] * L[j][k];
+      L[i][j] = v / L[j][j];
+    }
+  }
+  for (std::size_t c = 0; c < n; ++c) {  // solve L Lᵀ x = e_c
+    std::vector<double> y(n, 0.0), x(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      double v = i == c ? 1.0 : 0.0;
+      for (std::size_t k = 0; k < i; ++k) v -= L[i][k] * y[k];
+      y[i] = v / L[i][i];
+    }
+    for (std::size_t i = n; i-- > 0;) {
+      double v = y[i];
+      for (std::size_t k = i + 1; k < n; ++k) v -= L[k][i] * x[k];
+      x[i] = v / L[i][i];
+    }
+    for (std::size_t i = 0; i < n; ++i) inv[i][c] = x[i];
+  }
+  return inv;
+}
+
+double norm(const std::vector<double>& v) {
+  double s = 0.0;
+  for (double x : v) s += x * x;
+  return std::sqrt(s);
+}
+
+/// The projected gradient's norm on the scaled box [0, 1]^n (what the optimizer's tolerance is on).
+double projectedGradientNorm(const std::vector<double>& z, const std::vector<double>& g) {
+  std::vector<double> p(z.size());
+  for (std::size_t i = 0; i < z.size(); ++i) p[i] = std::clamp(z[i] - g[i], 0.0, 1.0) - z[i];
+  return norm(p);
+}
+
+}  // namespace
+
+int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFactory& factory, const std::string& outDir,
+                    std::string* message) {
+  const OptimizationSettings settings(caseParams);
+  const DesignParameters design(settings.design, caseParams);
+  for (std::size_t i = 0; i < design.size(); ++i)
+    if (design.initial()[i] < settings.lower[i] || design.initial()[i] > settings.upper[i])
+      throw InputError("Optimization: '" + settings.design[i] + "' starts at the case's value " +
+                       std::to_string(design.initial()[i]) + ", outside its bounds [" + std::to_string(settings.lower[i]) +
+                       ", " + std::to_string(settings.upper[i]) + "]");
+
+  // Remeshing cycles (with a shape parameter): each cycle's designs are its start's mesh moved
+  // (DesignRuns); a cycle that moved the design by more than kRemeshDistance of a bound's range is
+  // followed by one from a mesh made at its result.
+  const int cycles = design.movesShape() ? settings.remeshingCycles : 1;
+  const std::size_t n = design.size();
+  std::vector<double> hStart = design.initial(), hFinal = hStart;
+  std::vector<std::unique_ptr<DesignRuns>> allRuns;
+  ROL::Ptr<DesignObjective> objective;
+  double scale = 0.0, gnorm = 0.0;
+  int iterations = 0;
+  std::string status, failure;
+  bool converged = false;
+  nlohmann::json solves = nlohmann::json::array(), cycleLog = nlohmann::json::array();
+  for (int cycle = 0; cycle < cycles; ++cycle) {
+    const Teuchos::ParameterList cycleCase = design.applied(caseParams, hStart);
+    const DesignParameters cycleDesign(settings.design, cycleCase);
+    allRuns.push_back(std::make_unique<DesignRuns>(cycleCase, factory, cycleDesign, settings.warmStart));
+    DesignRuns& runs = *allRuns.back();
+    objective = ROL::makePtr<DesignObjective>(settings, runs, scale);
+    auto z = stdVector(objective->scaled(hStart));
+    auto bounds = ROL::makePtr<ROL::Bounds<double>>(stdVector(std::vector<double>(n, 0.0)),
+                                                    stdVector(std::vector<double>(n, 1.0)));
+    ROL::OptimizationProblem<double> problem(objective, z, bounds);
+    Teuchos::ParameterList rol = rolParameters(settings);
+    ROL::OptimizationSolver<double> solver(problem, rol);
+    std::ostringstream rolLog;
+    try {
+      solver.solve(rolLog);
+    } catch (const DesignNotSolved& e) {
+      failure = e.what();
+    }
+    log() << rolLog.str();
+    const auto state = solver.getAlgorithmState();
+    if (!runs.history().empty()) scale = objective->scale();
+    hFinal = objective->design(*z->getVector());
+    iterations += state->iter;
+    gnorm = state->gnorm;
+    status = failure.empty() ? ROL::EExitStatusToString(state->statusFlag) : "a solve did not converge";
+    converged = failure.empty() && state->statusFlag == ROL::EXITSTATUS_CONVERGED;
+    // The record of every solve: design, objective, projected gradient (scaled), Newton, seconds.
+    for (const DesignSolution& s : runs.history()) {
+      nlohmann::json entry = {{"solve", solves.size() + 1}, {"cycle", cycle}, {"newton_iterations", s.newtonIterations},
+                              {"seconds", s.seconds}, {"warm_start", s.warmStarted}};
+      for (std::size_t i = 0; i < n; ++i) entry["design"][settings.design[i]] = s.design[i];
+      try {
+        entry["objective"] = objective->objective(s);
+        entry["gradient_norm"] = projectedGradientNorm(objective->scaled(s.design), objective->scaledGradient(s));
+      } catch (const DesignNotSolved&) {
+      }
+      solves.push_back(entry);
+    }
+    double moved = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      moved = std::max(moved, std::abs(hFinal[i] - hStart[i]) / (settings.upper[i] - settings.lower[i]));
+    nlohmann::json entry = {{"cycle", cycle}, {"iterations", state->iter}, {"solves", runs.history().size()},
+                            {"status", status}, {"moved", moved}};
+    for (std::size_t i = 0; i < n; ++i) entry["design"][settings.design[i]] = hFinal[i];
+    cycleLog.push_back(entry);
+    log() << "optimization: cycle " << cycle << ": " << status << " after " << state->iter << " iteration(s), "
+          << runs.history().size() << " solve(s), the design moved by " << moved << " of its range\n";
+    if (!failure.empty() || !converged || moved <= kRemeshDistance) break;
+    if (cycle + 1 < cycles) log() << "optimization: the mesh made again at the design found\n";
+    hStart = hFinal;
+  }
+  DesignRuns& runs = *allRuns.back();
+  const std::size_t totalSolves = solves.size();
+
+  nlohmann::json block;
+  for (std::size_t i = 0; i < n; ++i) {
+    block["design"][settings.design[i]] = hFinal[i];
+    block["initial_design"][settings.design[i]] = design.initial()[i];
+    block["bounds"][settings.design[i]] = {settings.lower[i], settings.upper[i]};
+  }
+  block["algorithm"] = settings.algorithm;
+  block["iterations"] = iterations;
+  block["solves"] = totalSolves;
+  block["converged"] = converged;
+  block["status"] = status;
+  block["gradient_norm"] = gnorm;
+  block["history"] = solves;
+  block["cycles"] = cycleLog;
+  if (settings.isMisfit()) {
+    block["objective_kind"] = "least-squares misfit";
+  } else {
+    block["objective_kind"] = settings.maximize ? "maximize" : "minimize";
+    block["objective_response"] = settings.objective;
+    block["objective_scale"] = scale;
+  }
+
+  if (!failure.empty()) {  // the last design solved is the record; nothing better to write
+    *message = "optimization: " + failure;
+    CaseRun* last = runs.lastRun();
+    if (!last) throw DesignNotSolved(*message);  // not even the start converged
+    block["objective"] = nullptr;
+    last->setNotMet(*message);
+    last->addSummaryBlock("optimization", block);
+    last->writeOutput(outDir);
+    return 3;
+  }
+
+  // The final design, solved as the case asks (its own sensitivities, check and estimate), on the
+  // last cycle's topology (its reference Geo Parameters): the final values are the ones the
+  // optimizer saw; after a cycle that did not move the design, that is the mesh made at the
+  // design itself.
+  log() << "optimization: " << status << " after " << iterations << " iteration(s), " << totalSolves
+        << " solve(s); the final design solved as the case asks\n";
+  Teuchos::ParameterList finalCase = caseParams;
+  const DesignParameters lastCycle(settings.design, design.applied(caseParams, hStart));
+  for (const auto& [name, value] : lastCycle.referenceGeoParameters())
+    finalCase.sublist("Mesh").sublist("Reference Geo Parameters").set(name, value);
+  std::unique_ptr<CaseRun> final = factory(design.applied(finalCase, hFinal), nullptr);
+  if (settings.warmStart && runs.lastRun())
+    final->problem().startFrom(runs.lastRun()->problem(), true, !design.movesShape());
+  final->run();
+  const auto& f = final->functionals();
+  if (final->exitStatus() == 0 && settings.isMisfit()) {
+    DesignSolution s;
+    s.functionals = f;
+    s.derivatives = runs.at(hFinal).derivatives;  // the design's (solved, cached)
+    const auto r = objective->residuals(s);
+    double J = 0.0;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      J += 0.5 * r[i] * r[i];
+      block["measured"][settings.measured[i]] = {{"measured", settings.values[i]},
+                                                 {"error", settings.errors[i]},
+                                                 {"value", f.at(settings.measured[i])},
+                                                 {"residual", r[i]}};
+    }
+    block["objective"] = J;
+    const auto covariance = gaussNewtonCovariance(objective->residualJacobian(s), n);
+    block["identifiable"] = !covariance.empty();
+    if (covariance.empty()) block["covariance"] = nullptr;
+    for (std::size_t i = 0; i < covariance.size(); ++i) {
+      const double sd = std::sqrt(covariance[i][i]);
+      block["standard_error"][settings.design[i]] = sd;
+      block["confidence_95"][settings.design[i]] = {hFinal[i] - 1.96 * sd, hFinal[i] + 1.96 * sd};
+      for (std::size_t j = 0; j < n; ++j) block["covariance"][settings.design[i]][settings.design[j]] = covariance[i][j];
+    }
+  } else if (final->exitStatus() == 0) {
+    block["objective"] = f.at(settings.objective);
+  }
+  block["solves"] = totalSolves + 1;  // the final one too
+  final->addSummaryBlock("optimization", block);
+  if (!converged && final->exitStatus() == 0) {
+    std::ostringstream why;
+    why << "the optimizer stopped (" << status << ") with the projected gradient " << gnorm
+        << " above Optimization/Gradient Tolerance " << settings.gradientTolerance;
+    final->setNotMet(why.str());
+  }
+  final->writeOutput(outDir);
+  *message = final->statusMessage();
+  return final->exitStatus();
+}
+
+}  // namespace flowform
