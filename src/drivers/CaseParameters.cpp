@@ -221,6 +221,9 @@ static void buildValidCaseParameters(const ValidList& valid) {
              "design and inverse problems on Trilinos ROL (docs/optimization.md): design parameters with bounds, "
              "a response to minimize or maximize or a misfit to measured values; no sublist: nothing of this runs");
   valid->sublist("Regression", false, "expected values for a regression checker");
+  valid->set("Base Case", "",
+             "a case file (relative to this one) that this case changes: it is read first and this file's entries "
+             "laid over it, sublist by sublist (io/CaseFile.hpp); relative paths count from this file's folder");
 }
 
 Teuchos::RCP<const ParameterList> validCaseParameters() {

@@ -5,6 +5,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -237,10 +238,46 @@ Teuchos::RCP<Teuchos::ParameterList> readCaseText(const std::string& input, cons
   }
 }
 
-Teuchos::RCP<Teuchos::ParameterList> readCaseFile(const std::string& path) {
+namespace {
+
+/// `derived` over `base`: an entry of `derived` replaces the base's, a sublist merges into the
+/// base's sublist of that name.
+void overlay(Teuchos::ParameterList& base, const Teuchos::ParameterList& derived) {
+  for (auto it = derived.begin(); it != derived.end(); ++it) {
+    const std::string& name = derived.name(it);
+    if (derived.isSublist(name) && base.isSublist(name))
+      overlay(base.sublist(name), derived.sublist(name));
+    else
+      base.setEntry(name, derived.entry(it));
+  }
+}
+
+Teuchos::RCP<Teuchos::ParameterList> readCaseFileFrom(const std::string& path, std::vector<std::string>& chain) {
   std::string bytes;
   if (!readWholeFile(path, bytes)) throw InputError("case file '" + path + "' cannot be read");
-  return readCaseText(bytes, path);
+  Teuchos::RCP<Teuchos::ParameterList> params = readCaseText(bytes, path);
+  if (!params->isParameter("Base Case")) return params;
+  if (!params->isType<std::string>("Base Case"))
+    throw InputError("case file '" + path + "': 'Base Case' must be a string (the case file this one changes)");
+  const std::filesystem::path base =
+      (std::filesystem::path(path).parent_path() / params->get<std::string>("Base Case")).lexically_normal();
+  for (const std::string& seen : chain)
+    if (seen == base.string()) throw InputError("case file '" + path + "': 'Base Case' '" + base.string() +
+                                                "' includes itself (through " + chain.front() + ")");
+  if (!std::filesystem::path(base).has_parent_path() || !std::filesystem::exists(base))
+    throw InputError("case file '" + path + "': its Base Case '" + base.string() + "' does not exist");
+  chain.push_back(base.string());
+  Teuchos::RCP<Teuchos::ParameterList> merged = readCaseFileFrom(base.string(), chain);
+  params->remove("Base Case");
+  overlay(*merged, *params);
+  return merged;
+}
+
+}  // namespace
+
+Teuchos::RCP<Teuchos::ParameterList> readCaseFile(const std::string& path) {
+  std::vector<std::string> chain{std::filesystem::path(path).lexically_normal().string()};
+  return readCaseFileFrom(path, chain);
 }
 
 }  // namespace flowform

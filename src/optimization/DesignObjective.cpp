@@ -33,11 +33,11 @@ std::vector<double> DesignObjective::scaled(const std::vector<double>& h) const 
 }
 
 const DesignSolution& DesignObjective::solved(const ROL::Vector<double>& z) {
-  const bool first = m_runs.history().empty();
   const DesignSolution& s = m_runs.at(design(entries(z)));
-  if (first && !m_scaleKnown && !m_settings.isMisfit()) {
-    const double value = std::abs(s.functionals.at(m_settings.objective));
+  if (!m_scaleKnown && !m_settings.isMisfit()) {  // the start's value: the first design solved
+    const double value = std::abs(m_runs.history().front().functionals.at(m_settings.objective));
     m_scale = value > 0.0 && std::isfinite(value) ? value : 1.0;
+    m_scaleKnown = true;
   }
   return s;
 }

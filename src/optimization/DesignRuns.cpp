@@ -1,5 +1,6 @@
 #include "flowform/optimization/DesignRuns.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "flowform/core/Log.hpp"
@@ -33,6 +34,8 @@ const DesignSolution& DesignRuns::at(const std::vector<double>& design) {
   if (!m_history.empty() && m_history.back().design == design) return m_history.back();
   for (const DesignSolution& s : m_history)  // a design the optimizer comes back to
     if (s.design == design) return s;
+  for (double h : design)
+    if (!std::isfinite(h)) throw DesignNotSolved("the optimizer proposed a design that is not a number");
   const auto start = std::chrono::steady_clock::now();
   const Teuchos::ParameterList params = m_design.applied(m_case, design);
   std::ostringstream where;

@@ -155,6 +155,7 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, const
   auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
   tests->addStatusTest(budget);
   tests->addStatusTest(finite);
+  tests->addStatusTest(Teuchos::rcp(new DivergenceTest));
   tests->addStatusTest(residualTest);
   tests->addStatusTest(maxIters);
 

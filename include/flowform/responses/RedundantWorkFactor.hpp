@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "flowform/core/NumberRange.hpp"
 #include "flowform/responses/CellPowers.hpp"
 #include "flowform/responses/FlowRate.hpp"
 
@@ -25,15 +26,12 @@ struct RedundantWorkFactor {
   static void declareParameters(Teuchos::ParameterList& list) {
     declareBoundary(list, "the exit group the flux crosses");
     list.set("Entry Boundary", "", "Redundant Work Factor: the group the material enters through");
-    list.set("Flow Stress", 1.0, "Redundant Work Factor: the flow stress Y of the homogeneous work (> 0)");
+    list.set("Flow Stress", 1.0, "Redundant Work Factor: the flow stress Y of the homogeneous work (> 0)", positive());
   }
   explicit RedundantWorkFactor(const Teuchos::ParameterList& p)
       : m_exit(p.get<std::string>("Boundary")), m_entry(p.get<std::string>("Entry Boundary")),
         m_flowStress(p.get<double>("Flow Stress")) {
     if (m_entry.empty()) throw InputError("Redundant Work Factor: 'Entry Boundary' is required");
-    if (!(m_flowStress > 0.0) || !std::isfinite(m_flowStress))
-      throw InputError("Redundant Work Factor: 'Flow Stress' must be a positive number, got " +
-                       std::to_string(m_flowStress));
   }
 
   template <typename Scalar>

@@ -1,0 +1,117 @@
+"""Decisions on ROL against a derivative-free search, and the gradients by parameter type (issue
+#29's benchmark; docs/BENCHMARKS.md "Optimization").
+
+1. solves: each shipped decision (xml/drawing_optimal_angle.xml, xml/drawing_identify_friction.xml)
+   by ROL — solves, wall seconds, the design — against a golden-section search of the same
+   objective on the same interval (each evaluation one run of xml/drawing.xml at the design, no
+   sensitivities), stopped when its bracket is as narrow as the accuracy the ROL design is good
+   for: ± 0.3° for the angle (the gradient tolerance's, docs/optimization.md §2), ± σ_ν/10 for
+   the friction (σ_ν the Gauss-Newton standard error);
+2. gradients: xml/drawing.xml with the finite-difference check on for one parameter of each type
+   (friction, shape, material, boundary value): the DDM (total, through the free surface) against
+   the check's re-converged central difference, and the seconds the DDM took.
+
+usage: scripts/python bench/optimization_bench.py [FLOWFORM] [--parts solves,gradients] [--workdir DIR]
+The machine's load before and after each part is printed.
+"""
+import argparse
+import math
+import os
+import time
+
+from flowform_tools import default_flowform, launcher, machine, repo_path, tables
+
+TRESCA = [f"Boundary Conditions/{w}/{e}" for w in ("die_cone", "die_land") for e in ("Friction Law=Tresca",
+                                                                                      "Shear Factor=0.1")]
+MEASURED = {"drawing_force": (0.9100, 0.005), "die_pressure": (1.0700, 0.01)}
+GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
+
+
+def golden(f, lo, hi, width):
+    """Golden-section search of f on [lo, hi] until the bracket is narrower than width; the
+    bracket's best point and the number of evaluations."""
+    a, b = lo, hi
+    c, d = b - GOLDEN * (b - a), a + GOLDEN * (b - a)
+    fc, fd = f(c), f(d)
+    n = 2
+    while b - a > width:
+        if fc < fd:
+            b, d, fd = d, c, fc
+            c = b - GOLDEN * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + GOLDEN * (b - a)
+            fd = f(d)
+        n += 1
+    return (c if fc < fd else d), n
+
+
+def plain_run(flowform, workdir, sets):
+    r = launcher.run(flowform, repo_path("xml", "drawing.xml"), os.path.join(workdir, "eval"),
+                     sets + ["Sensitivity/Parameters={}", "Output/Write Solution=false", "Output/Boundary CSV=false"],
+                     quiet=True, clean=True)
+    if r.status != 0:
+        raise SystemExit(f"flowform exited {r.status} on xml/drawing.xml {sets}")
+    return r.summary["functionals"]
+
+
+def solves(flowform, workdir):
+    rows = []
+    for case, label in (("drawing_optimal_angle.xml", "die angle of least drawing force"),
+                        ("drawing_identify_friction.xml", "friction from force and die pressure")):
+        start = time.time()
+        r = launcher.run(flowform, repo_path("xml", case), os.path.join(workdir, case), [], quiet=True, clean=True)
+        seconds = time.time() - start
+        o = r.summary["optimization"]
+        name, value = next(iter(o["design"].items()))
+        rows.append([label, "ROL " + o["algorithm"], str(o["solves"]), f"{seconds:.1f}", f"{value:.5g}", o["status"]])
+        start = time.time()
+        if "alpha" in name:
+            found, n = golden(lambda a: plain_run(flowform, workdir, TRESCA + [f"Mesh/Geo Parameters/alpha={a!r}"])
+                              ["drawing_force"], 3.0, 25.0, 0.6)
+        else:
+            sigma = o["standard_error"][name]
+
+            def misfit(nu):
+                f = plain_run(flowform, workdir, [f"Boundary Conditions/{w}/Friction Coefficient={nu!r}"
+                                                  for w in ("die_cone", "die_land")])
+                return sum(0.5 * ((f[k] - v) / e) ** 2 for k, (v, e) in MEASURED.items())
+            found, n = golden(misfit, 0.0, 0.3, 0.2 * sigma)
+        rows.append([label, "golden section", str(n), f"{time.time() - start:.1f}", f"{found:.5g}", "bracket met"])
+    print(tables.markdown(["decision", "method", "solves", "wall s", "design", "stop"], rows))
+
+
+def gradients(flowform, workdir):
+    parameters = ["Friction Coefficient", "Geo Parameter:alpha", "Rate Exponent", "Boundary Value:outlet/Velocity Y"]
+    r = launcher.run(flowform, repo_path("xml", "drawing.xml"), os.path.join(workdir, "gradients"),
+                     ["Sensitivity/Parameters={" + ", ".join(parameters) + "}",
+                      "Sensitivity/Finite Difference Check=true"], quiet=True, clean=True)
+    s = r.summary
+    rows = []
+    for p in parameters:
+        for response in ("drawing_force", "die_pressure", "redundant_work"):
+            e = s["fd_check"][response][p]
+            rows.append([p, response, f"{e['ddm_total_shape']:.7g}", f"{e['fd_moving_shape']:.7g}",
+                         f"{e['rel_diff_total_shape']:.1e}", "–"])
+    print(tables.markdown(["parameter", "response", "DDM (total)", "FD (re-converged)", "relative", "adjoint"], rows))
+    t = s["timings"]
+    print(f"DDM {t.get('sensitivity_ddm', 0):.2f} s for {len(parameters)} parameters, the run {t.get('total', 0):.2f} s")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("flowform", nargs="?", default=default_flowform())
+    ap.add_argument("--parts", default="solves,gradients")
+    ap.add_argument("--workdir", default="out/bench_optimization")
+    args = ap.parse_args()
+    info = machine.machine_info()
+    print(f"# {info.get('date')}, commit {info.get('commit')}, {info.get('Model name')} x {info.get('CPU(s)')}")
+    for part in args.parts.split(","):
+        before = machine.load()
+        {"solves": solves, "gradients": gradients}[part](args.flowform, args.workdir)
+        print(f"# {part}: load {before:.2f} -> {machine.load():.2f}\n", flush=True)
+
+
+if __name__ == "__main__":
+    main()
