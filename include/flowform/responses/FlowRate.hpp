@@ -24,7 +24,12 @@ struct FlowRate {
 
   template <typename Scalar>
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
-    const BoundaryCurve curve = buildBoundaryCurve(c.mesh, c.mesh.boundary(m_boundary));
+    return through(c, buildBoundaryCurve(c.mesh, c.mesh.boundary(m_boundary)));
+  }
+
+  /// Q through `curve`, summed over the ranks.
+  template <typename Scalar>
+  static Scalar through(const ResponseContext<Scalar>& c, const BoundaryCurve& curve) {
     const auto w = fluxWeights(c.mesh, curve, c.geometry());
     Scalar local = 0.0;
     for (size_t k = 0; k < curve.nodes.size(); ++k) {  // each node by its owner

@@ -39,14 +39,7 @@ struct RedundantWorkFactor {
     const BoundaryCurve exit = buildBoundaryCurve(c.mesh, c.mesh.boundary(m_exit));
     const BoundaryCurve entry = buildBoundaryCurve(c.mesh, c.mesh.boundary(m_entry));
     const double strain = std::log(curveArea(c.mesh, entry, c.geometry()) / curveArea(c.mesh, exit, c.geometry()));
-    const auto w = FlowRate::fluxWeights(c.mesh, exit, c.geometry());
-    Scalar local = 0.0;
-    for (size_t k = 0; k < exit.nodes.size(); ++k) {
-      const LO n = c.dofMap.overlapIndex(exit.nodes[k]);
-      if (!c.dofMap.ownsNode(n)) continue;
-      local += w[k][0] * c.u(c.x, n, kUx) + w[k][1] * c.u(c.x, n, kUy);
-    }
-    const Scalar flux = sumOverRanks(*c.dofMap.comm(), local);
+    const Scalar flux = FlowRate::through(c, exit);
     return cellPower(c, true) / (m_flowStress * flux * strain);
   }
 
