@@ -1,12 +1,14 @@
 """Decisions on ROL against a derivative-free search, and the gradients by parameter type (issue
 #29's benchmark; docs/BENCHMARKS.md "Optimization").
 
-1. solves: each shipped decision (xml/drawing_optimal_angle.xml, xml/drawing_identify_friction.xml)
-   by ROL — solves, wall seconds, the design — against a golden-section search of the same
-   objective on the same interval (each evaluation one run of xml/drawing.xml at the design, no
-   sensitivities), stopped when its bracket is as narrow as the accuracy the ROL design is good
-   for: ± 0.3° for the angle (the gradient tolerance's, docs/optimization.md §2), ± σ_ν/10 for
-   the friction (σ_ν the Gauss-Newton standard error);
+1. solves: each shipped decision (xml/drawing_optimal_angle.xml, xml/drawing_identify_friction.xml,
+   xml/drawing_identify_two.xml) by ROL — solves, wall seconds, the design — against a
+   derivative-free search of the same objective on the same box (each evaluation one run of
+   xml/drawing.xml at the design, no sensitivities): golden section for one parameter, stopped
+   when its bracket is as narrow as the accuracy the ROL design is good for (± 0.3° for the angle,
+   the gradient tolerance's, docs/optimization.md §2; ± σ_ν/10 for the friction, σ_ν the
+   Gauss-Newton standard error); Nelder-Mead for two, from the same start, stopped when the
+   simplex is within σ/10 of each parameter's standard error;
 2. gradients: xml/drawing.xml with the finite-difference check on for one parameter of each type
    (friction, shape, material, boundary value): the DDM (total, through the free surface) against
    the check's re-converged central difference, and the seconds the DDM took.
@@ -47,6 +49,40 @@ def golden(f, lo, hi, width):
     return (c if fc < fd else d), n
 
 
+def nelder_mead(f, start, steps, tolerances, lo, hi):
+    """Nelder-Mead on a box (points clamped into it) until every coordinate's spread over the
+    simplex is below its tolerance; the best point and the number of evaluations."""
+    clamp = lambda x: [min(max(v, a), b) for v, a, b in zip(x, lo, hi)]
+    n = len(start)
+    simplex = [clamp(start)] + [clamp([start[j] + (steps[j] if j == i else 0.0) for j in range(n)]) for i in range(n)]
+    values = [f(x) for x in simplex]
+    count = n + 1
+    while any(max(x[j] for x in simplex) - min(x[j] for x in simplex) > tolerances[j] for j in range(n)):
+        order = sorted(range(n + 1), key=lambda k: values[k])
+        simplex, values = [simplex[k] for k in order], [values[k] for k in order]
+        centre = [sum(x[j] for x in simplex[:-1]) / n for j in range(n)]
+        worst = simplex[-1]
+        reflected = clamp([centre[j] + (centre[j] - worst[j]) for j in range(n)])
+        fr = f(reflected); count += 1
+        if fr < values[0]:
+            expanded = clamp([centre[j] + 2.0 * (centre[j] - worst[j]) for j in range(n)])
+            fe = f(expanded); count += 1
+            simplex[-1], values[-1] = (expanded, fe) if fe < fr else (reflected, fr)
+        elif fr < values[-2]:
+            simplex[-1], values[-1] = reflected, fr
+        else:
+            contracted = clamp([centre[j] + 0.5 * (worst[j] - centre[j]) for j in range(n)])
+            fc = f(contracted); count += 1
+            if fc < values[-1]:
+                simplex[-1], values[-1] = contracted, fc
+            else:  # shrink towards the best
+                for k in range(1, n + 1):
+                    simplex[k] = [simplex[0][j] + 0.5 * (simplex[k][j] - simplex[0][j]) for j in range(n)]
+                    values[k] = f(simplex[k]); count += 1
+    best = min(range(n + 1), key=lambda k: values[k])
+    return simplex[best], count
+
+
 def plain_run(flowform, workdir, sets):
     r = launcher.run(flowform, repo_path("xml", "drawing.xml"), os.path.join(workdir, "eval"),
                      sets + ["Sensitivity/Parameters={}", "Output/Write Solution=false", "Output/Boundary CSV=false"],
@@ -59,14 +95,28 @@ def plain_run(flowform, workdir, sets):
 def solves(flowform, workdir):
     rows = []
     for case, label in (("drawing_optimal_angle.xml", "die angle of least drawing force"),
-                        ("drawing_identify_friction.xml", "friction from force and die pressure")):
+                        ("drawing_identify_friction.xml", "friction from force and die pressure"),
+                        ("drawing_identify_two.xml", "friction and yield stress from force and die pressure")):
         start = time.time()
         r = launcher.run(flowform, repo_path("xml", case), os.path.join(workdir, case), [], quiet=True, clean=True)
         seconds = time.time() - start
         o = r.summary["optimization"]
         name, value = next(iter(o["design"].items()))
-        rows.append([label, "ROL " + o["algorithm"], str(o["solves"]), f"{seconds:.1f}", f"{value:.5g}", o["status"]])
+        shown = ", ".join(f"{v:.5g}" for v in o["design"].values())
+        rows.append([label, "ROL " + o["algorithm"], str(o["solves"]), f"{seconds:.1f}", shown, o["status"]])
         start = time.time()
+        if len(o["design"]) == 2:
+            measured = {"drawing_force": (1.1070, 0.005), "die_pressure": (1.2950, 0.01)}
+
+            def misfit2(x):
+                f = plain_run(flowform, workdir, [f"Boundary Conditions/{w}/Friction Coefficient={x[0]!r}"
+                                                  for w in ("die_cone", "die_land")] + [f"Material/Yield Stress={x[1]!r}"])
+                return sum(0.5 * ((f[k] - v) / e) ** 2 for k, (v, e) in measured.items())
+            sigma = [o["standard_error"][k] for k in o["design"]]
+            found, n = nelder_mead(misfit2, [0.05, 0.0], [0.03, 0.1], [0.1 * s_ for s_ in sigma], [0.0, 0.0], [0.3, 1.0])
+            rows.append([label, "Nelder-Mead", str(n), f"{time.time() - start:.1f}",
+                         ", ".join(f"{v:.5g}" for v in found), "simplex met"])
+            continue
         if "alpha" in name:
             found, n = golden(lambda a: plain_run(flowform, workdir, TRESCA + [f"Mesh/Geo Parameters/alpha={a!r}"])
                               ["drawing_force"], 3.0, 25.0, 0.6)

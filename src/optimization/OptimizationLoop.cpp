@@ -42,6 +42,10 @@ Teuchos::ParameterList rolParameters(const OptimizationSettings& s) {
   Teuchos::ParameterList& region = step.sublist("Trust Region");
   region.set("Subproblem Solver", "Truncated CG");
   region.set("Initial Radius", s.initialRadius);
+  // Coleman-Li's affine-scaled model for the bounds: on the misfits 5-7 solves where ROL's default
+  // (Kelley-Sachs) took 13-30, its projected trial steps visiting the box's corners; Lin-More
+  // stopped with an error in ROL 13.2.
+  region.set("Subproblem Model", "Coleman-Li");
   Teuchos::ParameterList& descent = step.sublist("Line Search").sublist("Descent Method");
   descent.set("Type", s.isMisfit() ? "Newton-Krylov" : "Quasi-Newton Method");
   Teuchos::ParameterList& status = list.sublist("Status Test");

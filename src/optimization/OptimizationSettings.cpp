@@ -41,7 +41,7 @@ void buildOptimizationParameters(const ValidList& valid) {
              "parameter mapped to [0, 1] by its bounds; a response objective divided by its initial |value|)",
              inRange(1e-14, 1.0));
   valid->set("Step Tolerance", 1e-8, "stop when a step is shorter than this (scaled design)", inRange(1e-16, 1.0));
-  valid->set("Initial Trust Region Radius", 0.1, "the first trust region, in the scaled design (1 = a bound's range)",
+  valid->set("Initial Trust Region Radius", 1.0, "the first trust region, in the scaled design (1 = a bound's range)",
              inRange(1e-6, 10.0));
   valid->set("Iteration Limit", 30, "optimizer iterations at most", intInRange(1, 1000));
   valid->set("Remeshing Cycles", 3,

@@ -26,7 +26,7 @@ struct OptimizationSettings {
   std::vector<std::string> measured;  ///< the misfit's responses
   std::vector<double> values, errors;  ///< their measured values and standard errors
   std::string algorithm;  ///< "Trust Region" or "Line Search"
-  double gradientTolerance = 1e-6, stepTolerance = 1e-8, initialRadius = 0.1;
+  double gradientTolerance = 1e-6, stepTolerance = 1e-8, initialRadius = 1.0;
   int iterationLimit = 30;
   bool warmStart = true;
   int remeshingCycles = 3;
