@@ -240,15 +240,26 @@ Teuchos::RCP<Teuchos::ParameterList> readCaseText(const std::string& input, cons
 
 namespace {
 
+constexpr const char* kReplaceBase = "Replace Base";
+
 /// `derived` over `base`: an entry of `derived` replaces the base's, a sublist merges into the
-/// base's sublist of that name.
+/// base's sublist of that name — or replaces it whole when it has `Replace Base = true`.
 void overlay(Teuchos::ParameterList& base, const Teuchos::ParameterList& derived) {
   for (auto it = derived.begin(); it != derived.end(); ++it) {
     const std::string& name = derived.name(it);
-    if (derived.isSublist(name) && base.isSublist(name))
-      overlay(base.sublist(name), derived.sublist(name));
-    else
+    if (derived.isSublist(name)) {
+      Teuchos::ParameterList own = derived.sublist(name);
+      const bool replace = own.isType<bool>(kReplaceBase) && own.get<bool>(kReplaceBase);
+      own.remove(kReplaceBase, false);
+      if (replace || !base.isSublist(name)) {
+        if (base.isParameter(name)) base.remove(name);
+        base.set(name, own);
+      } else {
+        overlay(base.sublist(name), own);
+      }
+    } else {
       base.setEntry(name, derived.entry(it));
+    }
   }
 }
 

@@ -81,6 +81,13 @@ TEUCHOS_UNIT_TEST(CaseFile, BaseCaseIsLaidUnder) {
   TEST_ASSERT(derived->isSublist("Optimization") && !base->isSublist("Optimization"));
   const auto parameters = derived->sublist("Sensitivity").get<Teuchos::Array<std::string>>("Parameters");
   TEST_EQUALITY(parameters.size(), 1u);
+  // A sublist with Replace Base = true replaces the base's whole (xml/drawing_optimal_angle.xml's
+  // Tresca walls carry no Coulomb Friction Coefficient), and the entry itself is gone.
+  const auto angle = readCaseFile("../xml/drawing_optimal_angle.xml");
+  const auto& cone = angle->sublist("Boundary Conditions").sublist("die_cone");
+  TEST_ASSERT(!cone.isParameter("Friction Coefficient") && !cone.isParameter("Replace Base"));
+  TEST_EQUALITY(cone.get<std::string>("Friction Law"), "Tresca");
+  TEST_ASSERT(angle->sublist("Boundary Conditions").isSublist("wire_surface"));  // the others merged
   // A chain that comes back to itself is refused.
   const fs::path dir = fs::temp_directory_path() / "flowform_base_case_test";
   fs::create_directories(dir);

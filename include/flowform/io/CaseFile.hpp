@@ -23,8 +23,9 @@ namespace flowform {
 /// byte-order mark is skipped.
 /// A root entry `Base Case` (a path relative to this file) names a case this one changes: that file
 /// is read first (its own Base Case too) and this one's entries laid over it, a sublist merging
-/// into the base's sublist of that name; relative paths (Mesh/File) then count from this file's
-/// folder, so a base and the cases that change it live in one folder.
+/// into the base's sublist of that name, or replacing it whole when it has `Replace Base = true`
+/// (a wall's other friction law); relative paths (Mesh/File) then count from this file's folder,
+/// so a base and the cases that change it live in one folder.
 Teuchos::RCP<Teuchos::ParameterList> readCaseFile(const std::string& path);
 
 /// The same for a case given as text; `source` names it in messages (a file name).
