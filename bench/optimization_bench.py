@@ -21,11 +21,10 @@ import math
 import os
 import time
 
+from drawing_checks import friction
 from flowform_tools import default_flowform, launcher, machine, repo_path, tables
 
-TRESCA = [f"Boundary Conditions/{w}/{e}" for w in ("die_cone", "die_land") for e in ("Friction Law=Tresca",
-                                                                                      "Shear Factor=0.1")]
-MEASURED = {"drawing_force": (0.9100, 0.005), "die_pressure": (1.0700, 0.01)}
+TRESCA = friction("Tresca", 0.1)  # xml/drawing_optimal_angle.xml's walls on xml/drawing.xml
 GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
 
 
@@ -105,29 +104,36 @@ def solves(flowform, workdir):
         shown = ", ".join(f"{v:.5g}" for v in o["design"].values())
         rows.append([label, "ROL " + o["algorithm"], str(o["solves"]), f"{seconds:.1f}", shown, o["status"]])
         start = time.time()
-        if len(o["design"]) == 2:
-            measured = {"drawing_force": (1.1070, 0.005), "die_pressure": (1.2950, 0.01)}
+        names = list(o["design"])
+        lo, hi = [o["bounds"][k][0] for k in names], [o["bounds"][k][1] for k in names]
 
-            def misfit2(x):
-                f = plain_run(flowform, workdir, [f"Boundary Conditions/{w}/Friction Coefficient={x[0]!r}"
-                                                  for w in ("die_cone", "die_land")] + [f"Material/Yield Stress={x[1]!r}"])
-                return sum(0.5 * ((f[k] - v) / e) ** 2 for k, (v, e) in measured.items())
-            sigma = [o["standard_error"][k] for k in o["design"]]
-            found, n = nelder_mead(misfit2, [0.05, 0.0], [0.03, 0.1], [0.1 * s_ for s_ in sigma], [0.0, 0.0], [0.3, 1.0])
+        def sets_at(x):
+            """xml/drawing.xml at design x (the friction coefficient on both walls, the yield stress)."""
+            sets = []
+            for k, v in zip(names, x):
+                if k == "Friction Coefficient":
+                    sets += [f"Boundary Conditions/{w}/Friction Coefficient={v!r}" for w in ("die_cone", "die_land")]
+                elif k == "Yield Stress":
+                    sets.append(f"Material/Yield Stress={v!r}")
+                else:
+                    raise SystemExit(f"the bench does not know the design parameter {k}")
+            return sets
+
+        def misfit(x):  # the case's own measurements, echoed in its summary
+            f = plain_run(flowform, workdir, sets_at(x))
+            return sum(0.5 * ((f[k] - m["measured"]) / m["error"]) ** 2 for k, m in o["measured"].items())
+        if "alpha" in name:
+            found, n = golden(lambda a: plain_run(flowform, workdir, TRESCA + [f"Mesh/Geo Parameters/alpha={a!r}"])
+                              ["drawing_force"], lo[0], hi[0], 0.6)
+        elif len(names) == 2:
+            sigma = [o["standard_error"][k] for k in names]
+            found, n = nelder_mead(misfit, [o["initial_design"][k] for k in names],
+                                   [0.1 * (b - a) for a, b in zip(lo, hi)], [0.1 * s_ for s_ in sigma], lo, hi)
             rows.append([label, "Nelder-Mead", str(n), f"{time.time() - start:.1f}",
                          ", ".join(f"{v:.5g}" for v in found), "simplex met"])
             continue
-        if "alpha" in name:
-            found, n = golden(lambda a: plain_run(flowform, workdir, TRESCA + [f"Mesh/Geo Parameters/alpha={a!r}"])
-                              ["drawing_force"], 3.0, 25.0, 0.6)
         else:
-            sigma = o["standard_error"][name]
-
-            def misfit(nu):
-                f = plain_run(flowform, workdir, [f"Boundary Conditions/{w}/Friction Coefficient={nu!r}"
-                                                  for w in ("die_cone", "die_land")])
-                return sum(0.5 * ((f[k] - v) / e) ** 2 for k, (v, e) in MEASURED.items())
-            found, n = golden(misfit, 0.0, 0.3, 0.2 * sigma)
+            found, n = golden(lambda v: misfit([v]), lo[0], hi[0], 0.2 * o["standard_error"][name])
         rows.append([label, "golden section", str(n), f"{time.time() - start:.1f}", f"{found:.5g}", "bracket met"])
     print(tables.markdown(["decision", "method", "solves", "wall s", "design", "stop"], rows))
 

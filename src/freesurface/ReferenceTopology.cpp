@@ -71,17 +71,20 @@ std::vector<std::array<double, 2>> followShape(const Mesh& reference, const Mesh
   return extendBoundaryDisplacement(reference, displacement, prescribed);
 }
 
+bool hasReferenceTopology(const Teuchos::ParameterList& meshParams) {
+  return meshParams.isSublist(kReferenceGeoParameters) && meshParams.sublist(kReferenceGeoParameters).numParams() > 0;
+}
+
 Mesh readMeshOnReference(const Teuchos::ParameterList& meshParams, const std::string& baseDir,
                          const Teuchos::Comm<int>& comm, const SizeField* sizeField) {
-  if (!meshParams.isSublist("Reference Geo Parameters") || meshParams.sublist("Reference Geo Parameters").numParams() == 0)
-    return readMesh(meshParams, baseDir, comm, sizeField);
+  if (!hasReferenceTopology(meshParams)) return readMesh(meshParams, baseDir, comm, sizeField);
   Teuchos::ParameterList referenceParams = meshParams;
-  const Teuchos::ParameterList& reference = meshParams.sublist("Reference Geo Parameters");
+  const Teuchos::ParameterList& reference = meshParams.sublist(kReferenceGeoParameters);
   for (auto it = reference.begin(); it != reference.end(); ++it)
     referenceParams.sublist("Geo Parameters").setEntry(reference.name(it), reference.entry(it));
-  referenceParams.remove("Reference Geo Parameters");
+  referenceParams.remove(kReferenceGeoParameters);
   Teuchos::ParameterList targetParams = meshParams;
-  targetParams.remove("Reference Geo Parameters");
+  targetParams.remove(kReferenceGeoParameters);
   Mesh mesh = readMesh(referenceParams, baseDir, comm, sizeField);
   const Mesh target = readMesh(targetParams, baseDir, comm, sizeField);
   mesh.setCoordinates(followShape(mesh, target));  // InputError if the move inverts a cell

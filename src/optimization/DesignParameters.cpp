@@ -3,12 +3,15 @@
 #include <cmath>
 
 #include "flowform/core/InputError.hpp"
+#include "flowform/freesurface/ReferenceTopology.hpp"
 
 namespace flowform {
 
 using Teuchos::ParameterList;
 
 namespace {
+
+const std::string kGeoPrefix = "Geo Parameter:";
 
 const ParameterList* sublistAt(const ParameterList& root, const std::vector<std::string>& path) {
   const ParameterList* list = &root;
@@ -81,15 +84,15 @@ DesignParameters::DesignParameters(const std::vector<std::string>& names, const 
 
 bool DesignParameters::movesShape() const {
   for (const std::string& name : m_names)
-    if (name.rfind("Geo Parameter:", 0) == 0) return true;
+    if (name.rfind(kGeoPrefix, 0) == 0) return true;
   return false;
 }
 
-std::vector<std::pair<std::string, double>> DesignParameters::referenceGeoParameters() const {
-  std::vector<std::pair<std::string, double>> reference;
+ParameterList DesignParameters::onReferenceTopology(ParameterList params, const std::vector<double>& values) const {
   for (std::size_t i = 0; i < m_names.size(); ++i)
-    if (m_names[i].rfind("Geo Parameter:", 0) == 0) reference.emplace_back(m_names[i].substr(14), m_initial[i]);
-  return reference;
+    if (m_names[i].rfind(kGeoPrefix, 0) == 0)
+      params.sublist("Mesh").sublist(kReferenceGeoParameters).set(m_names[i].substr(kGeoPrefix.size()), values[i]);
+  return params;
 }
 
 ParameterList DesignParameters::applied(const ParameterList& caseParams, const std::vector<double>& values) const {

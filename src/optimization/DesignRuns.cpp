@@ -1,5 +1,6 @@
 #include "flowform/optimization/DesignRuns.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -9,18 +10,18 @@ namespace flowform {
 
 DesignRuns::DesignRuns(const Teuchos::ParameterList& caseParams, CaseRunFactory factory,
                        const DesignParameters& design, bool warmStart)
-    : m_case(caseParams), m_factory(std::move(factory)), m_design(design), m_warmStart(warmStart) {
+    // A shape parameter keeps the start's mesh topology: every design's mesh is the start's moved
+    // to its shape (freesurface/ReferenceTopology), so the responses vary smoothly with the design.
+    : m_case(design.onReferenceTopology(caseParams, design.initial())),
+      m_factory(std::move(factory)),
+      m_design(design),
+      m_warmStart(warmStart) {
   // Each solve computes what the optimizer needs and nothing else: the design's derivatives, no
   // finite-difference check, no error estimate (the final design is re-solved as the case asks).
   Teuchos::ParameterList& sensitivity = m_case.sublist("Sensitivity");
   sensitivity.set("Parameters", Teuchos::Array<std::string>(design.names().begin(), design.names().end()));
   sensitivity.set("Finite Difference Check", false);
   m_case.sublist("Error Estimation").set("Method", "None");
-  // A shape parameter keeps the start's mesh topology: every design's mesh is the start's moved
-  // to its shape (freesurface/ReferenceTopology), so the responses vary smoothly with the design.
-  const auto reference = design.referenceGeoParameters();
-  for (const auto& [name, value] : reference)
-    m_case.sublist("Mesh").sublist("Reference Geo Parameters").set(name, value);
 }
 
 std::unique_ptr<CaseRun> DesignRuns::solve(const Teuchos::ParameterList& params, bool warm) {
@@ -31,9 +32,8 @@ std::unique_ptr<CaseRun> DesignRuns::solve(const Teuchos::ParameterList& params,
 }
 
 const DesignSolution& DesignRuns::at(const std::vector<double>& design) {
-  if (!m_history.empty() && m_history.back().design == design) return m_history.back();
-  for (const DesignSolution& s : m_history)  // a design the optimizer comes back to
-    if (s.design == design) return s;
+  for (auto s = m_history.rbegin(); s != m_history.rend(); ++s)  // the last one, or one it comes back to
+    if (s->design == design) return *s;
   for (double h : design)
     if (!std::isfinite(h)) throw DesignNotSolved("the optimizer proposed a design that is not a number");
   const auto start = std::chrono::steady_clock::now();

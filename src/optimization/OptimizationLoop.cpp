@@ -1,6 +1,8 @@
 #include "flowform/optimization/OptimizationLoop.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include <ROL_Bounds.hpp>
@@ -223,11 +225,8 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
   // design itself.
   log() << "optimization: " << status << " after " << iterations << " iteration(s), " << totalSolves
         << " solve(s); the final design solved as the case asks\n";
-  Teuchos::ParameterList finalCase = caseParams;
-  const DesignParameters lastCycle(settings.design, design.applied(caseParams, hStart));
-  for (const auto& [name, value] : lastCycle.referenceGeoParameters())
-    finalCase.sublist("Mesh").sublist("Reference Geo Parameters").set(name, value);
-  std::unique_ptr<CaseRun> final = factory(design.applied(finalCase, hFinal), nullptr);
+  std::unique_ptr<CaseRun> final =
+      factory(design.applied(design.onReferenceTopology(caseParams, hStart), hFinal), nullptr);
   if (settings.warmStart && runs.lastRun())
     final->problem().startFrom(runs.lastRun()->problem(), true, !design.movesShape());
   final->run();

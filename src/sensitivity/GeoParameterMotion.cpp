@@ -38,9 +38,7 @@ std::vector<std::array<double, 2>> meshedAt(const Problem& problem, const std::s
   // On a reference topology (Mesh/Reference Geo Parameters, freesurface/ReferenceTopology) both
   // meshes are the reference's moved: every node is followed, the interior too, so that V is the
   // derivative of the very map that made this mesh.
-  const bool onReference =
-      meshList.isSublist("Reference Geo Parameters") && meshList.sublist("Reference Geo Parameters").numParams() > 0;
-  if (onReference && other.cellNodes == made.cellNodes) return other.coords;
+  if (hasReferenceTopology(meshList) && other.cellNodes == made.cellNodes) return other.coords;
   // Boundary nodes: the k-th node along each group in the other mesh is the k-th here.
   std::vector<std::array<double, 2>> displacement(made.numNodes(), {0.0, 0.0});
   std::vector<char> prescribed(made.numNodes(), 0);

@@ -33,6 +33,7 @@ import math
 import os
 import sys
 
+from drawing_checks import friction
 from flowform_tools import launcher
 from flowform_tools.checks import check, verdict
 from flowform_tools.drawing_theory import optimal_angle_upper_bound
@@ -40,8 +41,7 @@ from flowform_tools.drawing_theory import optimal_angle_upper_bound
 R0, R1 = 1.0, 0.894427191
 HIDDEN_NU = 0.0731
 MEASURED = {"drawing_force": (0.9100, 0.005), "die_pressure": (1.0700, 0.01)}
-TRESCA = [f"Boundary Conditions/{w}/{e}" for w in ("die_cone", "die_land") for e in ("Friction Law=Tresca",
-                                                                                      "Shear Factor=0.1")]
+TRESCA = friction("Tresca", 0.1)  # xml/drawing_optimal_angle.xml's walls on xml/drawing.xml
 
 
 def parabola_vertex(xs, ys):

@@ -24,6 +24,13 @@ namespace flowform {
 /// A boundary curve turning by more than this at a node has a corner there (degrees).
 constexpr double kCornerAngle = 20.0;
 
+/// The Mesh sublist that names the reference's values.
+constexpr const char* kReferenceGeoParameters = "Reference Geo Parameters";
+
+/// Whether `meshParams` (a case's Mesh sublist) asks for a reference topology (a non-empty
+/// Reference Geo Parameters).
+bool hasReferenceTopology(const Teuchos::ParameterList& meshParams);
+
 /// readMesh, or with Mesh/Reference Geo Parameters the reference's mesh moved to the shape at
 /// Geo Parameters (InputError naming the group whose corners or ends do not match). Collective.
 Mesh readMeshOnReference(const Teuchos::ParameterList& meshParams, const std::string& baseDir,

@@ -11,7 +11,6 @@
 #pragma once
 
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
@@ -29,8 +28,9 @@ class DesignParameters {
   std::size_t size() const { return m_names.size(); }
   /// Whether a design parameter is a Geo Parameter (the domain changes from design to design).
   bool movesShape() const;
-  /// The Geo Parameters among the design with their starting values (the reference topology).
-  std::vector<std::pair<std::string, double>> referenceGeoParameters() const;
+  /// `params` with the design's Geo Parameters at `values` as its reference topology
+  /// (Mesh/Reference Geo Parameters, freesurface/ReferenceTopology); unchanged without any.
+  Teuchos::ParameterList onReferenceTopology(Teuchos::ParameterList params, const std::vector<double>& values) const;
   /// The case's own values (the start).
   const std::vector<double>& initial() const { return m_initial; }
   /// A copy of the case's parameters with the design `values` written into their entries.

@@ -5,9 +5,9 @@
 // and contact statuses (Problem::startFrom), from scratch when that start fails.
 #pragma once
 
-#include <chrono>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -44,8 +44,6 @@ class DesignRuns {
   const std::vector<DesignSolution>& history() const { return m_history; }
   /// The last run (its problem is the next one's start).
   CaseRun* lastRun() { return m_last.get(); }
-  /// The case as every design's run gets it before the design is applied (its reference topology).
-  const Teuchos::ParameterList& caseParameters() const { return m_case; }
 
  private:
   std::unique_ptr<CaseRun> solve(const Teuchos::ParameterList& params, bool warm);
