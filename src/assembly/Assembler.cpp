@@ -321,7 +321,8 @@ void Assembler::tangent(const Vector& xOwned, const Vector* dxOwned, const Sensi
   m_fOverlap->putScalar(0.0);
   {
     Workset ws = workset(xOverlap, dxOwned ? m_dxOverlap.get() : nullptr, m_fOverlap.get(), nullptr);
-    assembleCells<TangentEval>(ws, h, applyConstraints);
+    // A friction parameter enters the walls only: with x held its cells' derivative is zero.
+    if (dxOwned || !h || !h->isFriction()) assembleCells<TangentEval>(ws, h, applyConstraints);
     // The tractions depend on neither x nor h.
     if (m_walls) assembleContact<TangentEval>(ws, h, applyConstraints);
     if (applyConstraints) assembleHeatTransfer<TangentEval>(ws);

@@ -26,6 +26,9 @@ std::string allowedNames(const std::vector<ContactWall>& walls, int law, const G
     list += std::string(list.empty() ? "" : ", ") + "'" + k.name + "'";
     for (const ContactWall& w : walls) list += ", '" + std::string(k.name) + ":" + w.name() + "'";
   }
+  for (const ContactWall& w : walls)
+    if (w.hasFrictionField())
+      list += ", 'Friction Field:" + w.name() + "/<j>' (j = 0 ... " + std::to_string(w.numFieldStations() - 1) + ")";
   for (const MaterialParameterInfo& p : materialLaws()[law].parameters)
     if (p.sensitivity) list += ", '" + std::string(p.name) + "'";
   for (const auto& [name, value] : geo) list += ", 'Geo Parameter:" + name + "'";
@@ -101,6 +104,32 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
                      "Velocity X, Velocity Y, Temperature, Heat Transfer Coefficient, Ambient or Tool Temperature, " +
                      "Friction Heat Fraction, not of a Rigid Inflow); allowed: " + allowedNames(walls, law, geo, boundary));
   }
+  if (base == "Friction Field") {
+    const std::string given = colon == std::string::npos ? std::string() : name.substr(colon + 1);
+    const size_t slash = given.rfind('/');
+    const std::string group = given.substr(0, slash);
+    for (size_t w = 0; w < walls.size(); ++w)
+      if (walls[w].name() == group && walls[w].hasFrictionField()) h.wall = static_cast<int>(w);
+    if (h.wall < 0 || slash == std::string::npos)
+      throw InputError(where + ": '" + group + "' is not a contact wall with a Friction Field (the name is " +
+                       "'Friction Field:<wall>/<j>'); allowed: " + allowedNames(walls, law, geo, boundary));
+    const std::string index = given.substr(slash + 1);
+    const int stations = walls[h.wall].numFieldStations();
+    size_t used = 0;
+    int j = -1;
+    try {
+      j = std::stoi(index, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != index.size() || index.empty() || j < 0 || j >= stations)
+      throw InputError(where + ": the station must be a whole number from 0 to " + std::to_string(stations - 1) +
+                       " (wall '" + group + "' has " + std::to_string(stations) + " values), got '" + index + "'");
+    h.kind = ParameterKind::FrictionField;
+    h.station = j;
+    h.symbol = "nu_" + group + "_" + index;
+    return h;
+  }
   const std::vector<MaterialParameterInfo>& own = materialLaws()[law].parameters;
   for (size_t i = 0; i < own.size(); ++i)
     if (own[i].sensitivity && base == own[i].name) {
@@ -139,7 +168,14 @@ SensitivityParameter parseSensitivityParameter(const std::string& name, const st
     h.symbol += "_" + group;
   }
   bool enters = false;
-  for (size_t w = 0; w < walls.size(); ++w) enters |= h.entersWall(static_cast<int>(w), walls[w]);
+  for (size_t w = 0; w < walls.size(); ++w) {
+    enters |= h.entersWall(static_cast<int>(w), walls[w]);
+    if (h.kind == ParameterKind::FrictionCoefficient && h.entersWall(static_cast<int>(w), walls[w]) &&
+        walls[w].hasFrictionField())
+      throw InputError(where + ": wall '" + walls[w].name() + "' has a Friction Field, not one ν: differentiate by "
+                       "its values, 'Friction Field:" + walls[w].name() + "/<j>'" +
+                       (h.wall < 0 ? ", and name the other walls' ν one by one ('Friction Coefficient:<wall>')" : ""));
+  }
   if (!enters)
     throw InputError(where + ": no friction law of " + (h.wall >= 0 ? "that wall" : "the case's walls") + " uses " +
                      (h.kind == ParameterKind::FrictionCoefficient ? "ν (Coulomb, Orowan do)" : "m (Tresca, Orowan do)"));
@@ -159,6 +195,7 @@ double parameterValue(const SensitivityParameter& h, const FlowPhysics& physics,
   if (h.isBoundaryValue()) return h.boundaryValue;
   if (h.kind == ParameterKind::Thermal) return physics.thermal.value(h.thermal);
   if (!h.isFriction()) return physics.material.values[h.material];
+  if (h.kind == ParameterKind::FrictionField) return walls[h.wall].fieldValue(h.station);
   for (size_t w = 0; w < walls.size(); ++w)
     if (h.entersWall(static_cast<int>(w), walls[w])) {
       const FrictionParameters<double> fp = walls[w].frictionParameters();
@@ -175,6 +212,10 @@ void shiftParameter(const SensitivityParameter& h, double delta, FlowPhysics& ph
   }
   if (!h.isFriction()) {
     physics.material.values[h.material] += delta;
+    return;
+  }
+  if (h.kind == ParameterKind::FrictionField) {
+    walls[h.wall].setFieldValue(h.station, walls[h.wall].fieldValue(h.station) + delta);
     return;
   }
   for (size_t w = 0; w < walls.size(); ++w) {

@@ -30,6 +30,11 @@ static void buildValidParameters(const ValidList& valid) {
   }
   Teuchos::setStringToIntegralParameter<int>("Friction Law", names[0], doc, names(), valid.get());
   valid->set("Friction Coefficient", 0.0, "ν >= 0 (Coulomb, Orowan)", nonNegative());
+  valid->set("Friction Field", Teuchos::Array<double>(),
+             "ν along the wall instead of one Friction Coefficient (Coulomb, Orowan): its values ν_0 ... ν_N >= 0 at "
+             "N + 1 >= 2 equally spaced stations from the wall's first node to its last (the boundary curve runs "
+             "with the material on its left), linear between them (a Friction Coefficient given too is not used); each value is a sensitivity and "
+             "design parameter 'Friction Field:<wall>/<j>' (docs/contact.md \"Friction fields\")");
   valid->set("Shear Factor", 0.0, "m in [0, 1] (Tresca, Orowan)", inRange(0.0, 1.0));
   valid->set("Norton Coefficient", 0.0, "α_f K >= 0 (Norton) [stress·(time/length)^q]", nonNegative());
   valid->set("Norton Exponent", 1.0, "q > 0 (Norton)", positive());
@@ -117,6 +122,7 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   };
   m_settings.law = frictionLawIndex(list.get<std::string>("Friction Law"));  // validated: one of them
   m_settings.frictionCoefficient = list.get<double>("Friction Coefficient");
+  for (double nu : list.get<Teuchos::Array<double>>("Friction Field")) m_settings.frictionField.push_back(nu);
   m_settings.shearFactor = list.get<double>("Shear Factor");
   m_settings.friction.nortonCoefficient = list.get<double>("Norton Coefficient");
   m_settings.friction.nortonExponent = positive("Norton Exponent");
@@ -143,8 +149,22 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
       warn() << where << " does not use 'Shear Factor' (ignored)\n";
     if (info.usesShearFactor && !params.isParameter("Shear Factor"))
       warn() << where << " uses 'Shear Factor', which is not given: m = 0, no friction from it\n";
-    if (info.usesFrictionCoefficient && !params.isParameter("Friction Coefficient"))
+    if (info.usesFrictionCoefficient && !params.isParameter("Friction Coefficient") && m_settings.frictionField.empty())
       warn() << where << " uses 'Friction Coefficient', which is not given: ν = 0, no friction from it\n";
+    if (!m_settings.frictionField.empty()) {
+      const std::string field = "Boundary Conditions/" + group + "/Friction Field";
+      if (!info.usesFrictionCoefficient)
+        throw InputError(field + ": Friction Law = " + info.name + " has no friction coefficient (Coulomb, Orowan do)");
+      // A field given over a case that sets ν (by --set, or over a Base Case): the field wins, said.
+      if (params.isParameter("Friction Coefficient"))
+        warn() << field << " gives ν along the wall: its Friction Coefficient is not used\n";
+      if (m_settings.frictionField.size() < 2)
+        throw InputError(field + ": needs at least 2 values (the wall's two ends), got " +
+                         std::to_string(m_settings.frictionField.size()));
+      for (double nu : m_settings.frictionField)
+        if (!(nu >= 0.0) || !std::isfinite(nu))
+          throw InputError(field + ": every value must be a finite number >= 0 (got " + Teuchos::toString(nu) + ")");
+    }
   }
   if (m_settings.releasedFreeSurface && m_settings.upstreamGroup.empty())
     throw InputError("Boundary Conditions/" + group + "/Start Group: Released Nodes = Free Surface needs the "
@@ -305,6 +325,16 @@ void ContactWall::checkTangency(const std::string& group) const {
   }
 }
 
+std::array<double, 2> ContactWall::stationPoint(int station) const {
+  const double length = m_curve.arcLength.back() + (m_curve.closed ? m_curve.segmentLength.back() : 0.0);
+  const double s = length * station / (numFieldStations() - 1);
+  size_t k = 0;
+  while (k + 2 < m_curve.arcLength.size() && m_curve.arcLength[k + 1] < s) ++k;
+  const size_t o = (k + 1) % m_toolCoords.size();
+  const double w = std::clamp((s - m_curve.arcLength[k]) / m_curve.segmentLength[k], 0.0, 1.0);
+  return {(1.0 - w) * m_toolCoords[k][0] + w * m_toolCoords[o][0], (1.0 - w) * m_toolCoords[k][1] + w * m_toolCoords[o][1]};
+}
+
 void ContactWall::refreshGeometry(const Mesh& mesh) {
   // The same nodes in the same order (the mesh's topology does not change), new positions.
   const std::vector<GO> nodes = m_curve.nodes;
@@ -313,6 +343,18 @@ void ContactWall::refreshGeometry(const Mesh& mesh) {
     throw std::logic_error("contact wall '" + m_curve.name + "': moving the nodes changed the order of the curve");
   m_coords.clear();
   for (GO node : m_curve.nodes) m_coords.push_back(mesh.coords[node]);
+  if (hasFrictionField()) {
+    // Node k at s_k/L of the wall: between stations floor(N s_k/L) and the next.
+    const int intervals = numFieldStations() - 1;
+    const double length = m_curve.arcLength.back() + (m_curve.closed ? m_curve.segmentLength.back() : 0.0);
+    m_fieldStation.resize(m_curve.nodes.size());
+    m_fieldFraction.resize(m_curve.nodes.size());
+    for (size_t k = 0; k < m_curve.nodes.size(); ++k) {
+      const double t = intervals * m_curve.arcLength[k] / length;
+      m_fieldStation[k] = std::min(static_cast<int>(std::floor(t)), intervals - 1);
+      m_fieldFraction[k] = t - m_fieldStation[k];
+    }
+  }
   if (m_settings.releasedFreeSurface && !m_toolNormals.empty()) m_curve.normals = m_toolNormals;
   m_cornerNormals.assign(m_curve.nodes.size(), {});
   m_cornerSpeeds.assign(m_curve.nodes.size(), {});

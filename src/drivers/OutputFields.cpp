@@ -33,7 +33,7 @@ FieldSet gatherOutputFields(const Assembler& assembler, const Vector& solution, 
   const auto allDofs = toRoot(solution, dofMap, rootDofs);
   // Sensitivity fields only when sensitivities were asked for and computed.
   Teuchos::RCP<MultiVector> sensitivityDofs, differenceDofs;
-  if (sensitivity.computed()) sensitivityDofs = toRoot(sensitivity.solutionDerivatives(), dofMap, rootDofs);
+  if (sensitivity.hasSolutionDerivatives()) sensitivityDofs = toRoot(sensitivity.solutionDerivatives(), dofMap, rootDofs);
   if (fdCheck) differenceDofs = toRoot(fdCheck->solutionDifferences(), dofMap, rootDofs);
 
   // Cell values at the centroid, computed where the cell is assembled, then to rank 0:

@@ -56,6 +56,8 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
                                                 m_problem->physics().material.law, givenGeoParameters(own),
                                                 givenBoundaryValues(own),
                                                 m_problem->dofMap().fields().contains(kTemperatureField));
+  m_sensitivity->checkMethod(!m_problem->boundaryConditions().rigidInflow().group.empty(),
+                             !m_problem->freeSurfaces().empty());
   m_setupSeconds = secondsSince(start);
 }
 

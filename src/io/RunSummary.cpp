@@ -46,6 +46,16 @@ nlohmann::json runSummary(const Problem& problem, const RunRecord& record,
                                {"jump", inflow.jump},
                                {"history", history}};
   }
+  for (const ContactWall& wall : problem.contactWalls()) {
+    if (!wall.hasFrictionField()) continue;  // where a Friction Field's stations lie, and its values
+    nlohmann::json stations = nlohmann::json::array(), values = nlohmann::json::array();
+    for (int j = 0; j < wall.numFieldStations(); ++j) {
+      const auto point = wall.stationPoint(j);
+      stations.push_back({point[0], point[1]});
+      values.push_back(wall.fieldValue(j));
+    }
+    summary["friction_fields"][wall.name()] = {{"stations", stations}, {"values", values}};
+  }
   summary["dofs"] = problem.dofMap().ownedMap()->getGlobalNumElements();
   summary["mesh"] = {{"file", mesh.source}, {"nodes", mesh.numNodes()}, {"cells", mesh.numCells()},
                      {"cell_type", cellTypeName(mesh.cellType)}};

@@ -39,6 +39,11 @@ std::vector<std::vector<std::string>> entriesOf(const std::string& name, const P
     if (slash == std::string::npos) return {};
     return {{"Boundary Conditions", rest.substr(0, slash), rest.substr(slash + 1)}};
   }
+  if (base == "Friction Field") {
+    const std::size_t slash = rest.rfind('/');
+    if (slash == std::string::npos) return {};
+    return {{"Boundary Conditions", rest.substr(0, slash), base}};
+  }
   if (base == "Friction Coefficient" || base == "Shear Factor") {
     if (!rest.empty()) return {{"Boundary Conditions", rest, base}};
     std::vector<std::vector<std::string>> walls;
@@ -54,6 +59,17 @@ std::vector<std::vector<std::string>> entriesOf(const std::string& name, const P
   return {{"Material", name}};
 }
 
+/// The station j of "Friction Field:<wall>/<j>", −1 for another name (or a malformed one, which
+/// Sensitivity/Parameters refuses with the allowed names).
+int fieldStation(const std::string& name) {
+  if (name.rfind("Friction Field:", 0) != 0) return -1;
+  const std::size_t slash = name.rfind('/');
+  if (slash == std::string::npos) return -1;
+  const std::string index = name.substr(slash + 1);
+  if (index.empty() || index.find_first_not_of("0123456789") != std::string::npos) return -1;
+  return std::stoi(index);
+}
+
 }  // namespace
 
 DesignParameters::DesignParameters(const std::vector<std::string>& names, const ParameterList& caseParams)
@@ -65,6 +81,21 @@ DesignParameters::DesignParameters(const std::vector<std::string>& names, const 
       throw InputError(where + ": the case gives no value for it to start from (a friction parameter needs a "
                        "contact wall that sets it; a Boundary Value is 'group/entry')");
     double start = 0.0;
+    const int element = fieldStation(name);
+    m_elements.push_back(element);
+    if (element >= 0) {  // one value of an array entry (a Friction Field's station)
+      const ParameterList* list = sublistAt(caseParams, paths[0]);
+      if (!list || !list->isType<Teuchos::Array<double>>(paths[0].back()))
+        throw InputError(where + ": the case does not set " + joinedPath(paths[0]) + " (the design starts from the "
+                         "case's values: give the field there)");
+      const auto& values = list->get<Teuchos::Array<double>>(paths[0].back());
+      if (element >= static_cast<int>(values.size()))
+        throw InputError(where + ": " + joinedPath(paths[0]) + " has " + std::to_string(values.size()) +
+                         " values (stations 0 to " + std::to_string(values.size() - 1) + ")");
+      m_paths.push_back(paths);
+      m_initial.push_back(values[element]);
+      continue;
+    }
     for (std::size_t i = 0; i < paths.size(); ++i) {
       const ParameterList* list = sublistAt(caseParams, paths[i]);
       if (!list || !list->isType<double>(paths[i].back()))
@@ -101,7 +132,13 @@ ParameterList DesignParameters::applied(const ParameterList& caseParams, const s
     for (const auto& path : m_paths[p]) {
       ParameterList* list = &copy;
       for (std::size_t i = 0; i + 1 < path.size(); ++i) list = &list->sublist(path[i]);
-      list->set(path.back(), values[p]);
+      if (m_elements[p] >= 0) {
+        Teuchos::Array<double> field = list->get<Teuchos::Array<double>>(path.back());
+        field[m_elements[p]] = values[p];
+        list->set(path.back(), field);
+      } else {
+        list->set(path.back(), values[p]);
+      }
     }
   return copy;
 }

@@ -9,7 +9,7 @@
 namespace flowform {
 
 DesignRuns::DesignRuns(const Teuchos::ParameterList& caseParams, CaseRunFactory factory,
-                       const DesignParameters& design, bool warmStart)
+                       const DesignParameters& design, bool warmStart, const std::vector<std::string>& responses)
     // A shape parameter keeps the start's mesh topology: every design's mesh is the start's moved
     // to its shape (freesurface/ReferenceTopology), so the responses vary smoothly with the design.
     : m_case(design.onReferenceTopology(caseParams, design.initial())),
@@ -21,6 +21,8 @@ DesignRuns::DesignRuns(const Teuchos::ParameterList& caseParams, CaseRunFactory 
   Teuchos::ParameterList& sensitivity = m_case.sublist("Sensitivity");
   sensitivity.set("Parameters", Teuchos::Array<std::string>(design.names().begin(), design.names().end()));
   sensitivity.set("Finite Difference Check", false);
+  // Only the responses the objective reads (an adjoint each with Method = Adjoint).
+  sensitivity.set("Responses", Teuchos::Array<std::string>(responses.begin(), responses.end()));
   m_case.sublist("Error Estimation").set("Method", "None");
 }
 

@@ -135,7 +135,9 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
   for (int cycle = 0; cycle < cycles; ++cycle) {
     const Teuchos::ParameterList cycleCase = design.applied(caseParams, hStart);
     const DesignParameters cycleDesign(settings.design, cycleCase);
-    allRuns.push_back(std::make_unique<DesignRuns>(cycleCase, factory, cycleDesign, settings.warmStart));
+    allRuns.push_back(std::make_unique<DesignRuns>(cycleCase, factory, cycleDesign, settings.warmStart,
+                                                   settings.isMisfit() ? settings.measured
+                                                                       : std::vector<std::string>{settings.objective}));
     DesignRuns& runs = *allRuns.back();
     objective = ROL::makePtr<DesignObjective>(settings, runs, scale);
     auto z = stdVector(objective->scaled(hStart));

@@ -164,14 +164,19 @@ bool Problem::continueInFriction(NonlinearSolver& solver, const Vector& initial)
   // first solve is the friction-light problem every start handles; each step moves the stick
   // and slip zones a little). Measured on xml/extrusion.xml at ν = 2 (docs/contact.md).
   std::vector<double> nu;
+  std::vector<std::vector<double>> fields;  // a Friction Field's values
   bool coulomb = false;
   for (const ContactWall& wall : m_walls) {
     nu.push_back(wall.settings().frictionCoefficient);
-    coulomb = coulomb || (wall.usesFrictionCoefficient() && wall.settings().frictionCoefficient > 0.0);
+    fields.push_back(wall.settings().frictionField);
+    coulomb = coulomb || (wall.usesFrictionCoefficient() && wall.largestFrictionCoefficient() > 0.0);
   }
   if (!coulomb) return false;
   auto scale = [&](double s) {
-    for (size_t w = 0; w < m_walls.size(); ++w) m_walls[w].setFrictionCoefficient(s * nu[w]);
+    for (size_t w = 0; w < m_walls.size(); ++w) {
+      m_walls[w].setFrictionCoefficient(s * nu[w]);
+      for (size_t j = 0; j < fields[w].size(); ++j) m_walls[w].setFieldValue(static_cast<int>(j), s * fields[w][j]);
+    }
   };
   const SolveReport failed = m_report;
   int iterations = m_report.newtonIterations;
@@ -230,8 +235,8 @@ std::string Problem::firstSolveHints() const {
   double nu = 0.0;
   std::string coulomb;
   for (const ContactWall& wall : m_walls)
-    if (wall.usesFrictionCoefficient() && wall.settings().frictionCoefficient > nu) {
-      nu = wall.settings().frictionCoefficient;
+    if (wall.usesFrictionCoefficient() && wall.largestFrictionCoefficient() > nu) {
+      nu = wall.largestFrictionCoefficient();
       coulomb = wall.name();
     }
   std::string hints =

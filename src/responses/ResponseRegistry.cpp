@@ -41,6 +41,10 @@ class RegisteredResponse final : public ResponseFunction {
     if constexpr (T::kDifferentiable) return m_response.evaluate(c);
     else throw std::logic_error(std::string(T::kName) + " has no derivative");
   }
+  GradientFad gradient(const ResponseContext<GradientFad>& c) const override {
+    if constexpr (T::kDifferentiable) return m_response.evaluate(c);
+    else throw std::logic_error(std::string(T::kName) + " has no gradient");
+  }
   bool reactionWeights(const Mesh& mesh, const DofMap& dofMap, Geometry geometry, Vector& c) const override {
     if constexpr (T::kAdaptivityTarget) {
       c.putScalar(0.0);

@@ -27,6 +27,12 @@ TangentFad sumOverRanks(const Comm& comm, const TangentFad& local) {
   return dual<TangentFad>(sumOverRanks(comm, local.val()), sumOverRanks(comm, local.dx(0)));
 }
 
+GradientFad sumOverRanks(const Comm& comm, const GradientFad& local) {
+  GradientFad global(local);
+  global.val() = sumOverRanks(comm, local.val());
+  return global;
+}
+
 double curveArea(const Mesh& mesh, const BoundaryCurve& curve, Geometry geometry) {
   double area = 0.0;
   for (size_t s = 0; s < curve.segmentLength.size(); ++s) {
@@ -53,6 +59,45 @@ Workset vectorReader(const Vector& x, const Vector* dx) {
   return ws;
 }
 
+namespace {
+
+/// Cell k's plastic power ∫_K 2μ D:D and stabilization power τ_K ∫_K ∇p·(∇p − f), added to
+/// `plastic` and `stabilization`, from the cell's gathered values (u_x, u_y, p per node) and its
+/// material (at the cell's temperature).
+template <typename Scalar>
+void addCellPowers(const CellGeometry& g, int npc, const FlowPhysics& physics, const MaterialParameters<Scalar>& cell,
+                   const Scalar* values, Scalar& plastic, Scalar& stabilization) {
+  const Geometry geometry = physics.kernel.geometry;
+  const Scalar tau = stabilizationTau(physics.kernel.beta, g.diameter, centroidViscosity(g.centroid, geometry, cell, values));
+  for (int q = 0; q < g.rule.numPoints; ++q) {
+    const auto d = strainRateAt(g.rule, q, geometry, values);
+    const Scalar mu = viscosity(regularizedStrainRate(d.ddot(), cell), cell);
+    const double w = measureWeight(g.rule, q, geometry);
+    plastic += w * 2.0 * mu * d.ddot();
+    Scalar px = 0.0, py = 0.0;
+    for (int a = 0; a < npc; ++a) {
+      px += g.rule.dNdx[q][a] * values[EqualOrderLayout::index(a, kP)];
+      py += g.rule.dNdy[q][a] * values[EqualOrderLayout::index(a, kP)];
+    }
+    stabilization += w * tau * (px * (px - physics.kernel.bodyForce[0]) + py * (py - physics.kernel.bodyForce[1]));
+  }
+}
+
+/// The area (volume) of cell k when |u| at its centroid is below deadSpeed, else 0 (values only).
+double deadCellArea(const Workset& x, const CellGeometry& g, int npc, const LO* dofs, Geometry geometry, double deadSpeed) {
+  double ux = 0.0, uy = 0.0;
+  for (int a = 0; a < npc; ++a) {
+    ux += g.centroid.N[0][a] * x.x(dofs[EqualOrderLayout::index(a, kUx)], 0);
+    uy += g.centroid.N[0][a] * x.x(dofs[EqualOrderLayout::index(a, kUy)], 0);
+  }
+  double area = 0.0;
+  if (std::hypot(ux, uy) < deadSpeed)
+    for (int q = 0; q < g.rule.numPoints; ++q) area += measureWeight(g.rule, q, geometry);
+  return area;
+}
+
+}  // namespace
+
 template <typename Scalar>
 void cellIntegrals(const Workset& x, const Mesh& mesh, const DofMap& dofMap, const FlowPhysics& physics,
                    const MaterialParameters<Scalar>& material, double deadSpeed, Scalar& plasticPower,
@@ -71,29 +116,58 @@ void cellIntegrals(const Workset& x, const Mesh& mesh, const DofMap& dofMap, con
     computeCellGeometry(mesh, dofMap.cells()[k], geometry, g);
     dofMap.cellDofs(k, dofs);
     gather(x, dofs, EqualOrderLayout::numDofs(npc), values);
-    const MaterialParameters<Scalar> cell = cellMaterial(x, dofMap, k, g, material, temperature);
-    const Scalar tau =
-        stabilizationTau(physics.kernel.beta, g.diameter, centroidViscosity(g.centroid, geometry, cell, values));
-    for (int q = 0; q < g.rule.numPoints; ++q) {
-      const auto d = strainRateAt(g.rule, q, geometry, values);
-      const Scalar mu = viscosity(regularizedStrainRate(d.ddot(), cell), cell);
-      const double w = measureWeight(g.rule, q, geometry);
-      plasticPower += w * 2.0 * mu * d.ddot();
-      Scalar px = 0.0, py = 0.0;
-      for (int a = 0; a < npc; ++a) {
-        px += g.rule.dNdx[q][a] * values[EqualOrderLayout::index(a, kP)];
-        py += g.rule.dNdy[q][a] * values[EqualOrderLayout::index(a, kP)];
-      }
-      stabilizationPower += w * tau * (px * (px - physics.kernel.bodyForce[0]) + py * (py - physics.kernel.bodyForce[1]));
+    addCellPowers(g, npc, physics, cellMaterial(x, dofMap, k, g, material, temperature), values, plasticPower,
+                  stabilizationPower);
+    deadArea += deadCellArea(x, g, npc, dofs, geometry, deadSpeed);
+  }
+}
+
+/// The gradient: each cell differentiated by its own dofs (a fixed-size Fad over the cell's flow
+/// dofs and its temperatures), its derivatives added into the totals' components — the cost of
+/// one Jacobian assembly, not of n-component arithmetic in every cell.
+template <>
+void cellIntegrals<GradientFad>(const Workset& x, const Mesh& mesh, const DofMap& dofMap, const FlowPhysics& physics,
+                                const MaterialParameters<GradientFad>& material, double deadSpeed,
+                                GradientFad& plasticPower, GradientFad& stabilizationPower, double& deadArea) {
+  constexpr int kFlow = EqualOrderLayout::numDofs(kMaxNodesPerCell);
+  constexpr int kCell = kFlow + kMaxNodesPerCell;
+  using CellFad = Sacado::Fad::SFad<double, kCell>;
+  const int npc = dofMap.nodesPerCell();
+  const int nFlow = EqualOrderLayout::numDofs(npc);
+  const Geometry geometry = physics.kernel.geometry;
+  CellGeometry g;
+  LO dofs[kFlow + kMaxNodesPerCell];
+  CellFad values[kFlow], temperatures[kMaxNodesPerCell];
+  plasticPower = GradientFad(x.gradientSize, 0.0);
+  stabilizationPower = GradientFad(x.gradientSize, 0.0);
+  deadArea = 0.0;
+  MaterialParameters<CellFad> base;  // the material's values: its parameters are not seeded here
+  base.law = material.law;
+  for (int i = 0; i < kMaxMaterialParameters; ++i) base.values[i] = material.values[i].val();
+  base.cutoff = material.cutoff.val();
+  const int temperature = temperatureComponentFor(dofMap, material.law);
+  for (size_t k = 0; k < dofMap.cells().size(); ++k) {
+    computeCellGeometry(mesh, dofMap.cells()[k], geometry, g);
+    dofMap.cellDofs(k, dofs);
+    int n = nFlow;
+    for (int i = 0; i < nFlow; ++i) values[i] = CellFad(kCell, i, x.x(dofs[i], 0));
+    MaterialParameters<CellFad> cell = base;
+    if (temperature >= 0) {
+      dofMap.cellDofs(k, &temperature, 1, dofs + nFlow);
+      for (int a = 0; a < npc; ++a) temperatures[a] = CellFad(kCell, n + a, x.x(dofs[n + a], 0));
+      cell = atTemperature(base, centroidTemperature(g, temperatures, 1, 0));
+      n += npc;
     }
-    double ux = 0.0, uy = 0.0;
-    for (int a = 0; a < npc; ++a) {
-      ux += g.centroid.N[0][a] * x.x(dofs[EqualOrderLayout::index(a, kUx)], 0);  // values only
-      uy += g.centroid.N[0][a] * x.x(dofs[EqualOrderLayout::index(a, kUy)], 0);
+    CellFad plastic = 0.0, stabilization = 0.0;
+    addCellPowers(g, npc, physics, cell, values, plastic, stabilization);
+    plasticPower.val() += plastic.val();
+    stabilizationPower.val() += stabilization.val();
+    for (int i = 0; i < n; ++i) {
+      if (dofs[i] < 0) continue;
+      plasticPower.fastAccessDx(x.gradientOffset + dofs[i]) += plastic.dx(i);
+      stabilizationPower.fastAccessDx(x.gradientOffset + dofs[i]) += stabilization.dx(i);
     }
-    if (std::hypot(ux, uy) < deadSpeed) {
-      for (int q = 0; q < g.rule.numPoints; ++q) deadArea += measureWeight(g.rule, q, geometry);
-    }
+    deadArea += deadCellArea(x, g, npc, dofs, geometry, deadSpeed);
   }
 }
 

@@ -1,7 +1,10 @@
 #include "flowform/responses/Responses.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <type_traits>
+
+#include <Teuchos_CommHelpers.hpp>
 
 #include "flowform/assembly/EvaluationTypes.hpp"
 #include "flowform/assembly/SensitivityParameter.hpp"
@@ -103,6 +106,70 @@ std::map<std::string, double> Responses::evaluate(const Vector& xOwned, const Me
                                                   const Assembler& assembler, const std::vector<ContactWall>& walls,
                                                   const Vector* reactions) const {
   return evaluateAs<double>(xOwned, nullptr, nullptr, mesh, dofMap, assembler, walls, reactions);
+}
+
+std::map<std::string, double> Responses::partials(const Vector& xOwned, const SensitivityParameter& h,
+                                                  const Mesh& mesh, const DofMap& dofMap, const Assembler& assembler,
+                                                  const std::vector<ContactWall>& walls) const {
+  std::map<std::string, double> d;
+  for (const auto& [name, value] : evaluateAs<TangentFad>(xOwned, nullptr, &h, mesh, dofMap, assembler, walls))
+    d[name] = value.dx(0);
+  return d;
+}
+
+std::vector<std::string> Responses::differentiableNames() const {
+  std::vector<std::string> names;
+  for (const Response& r : m_responses)
+    if (responseTypes()[r.type].differentiable) names.push_back(r.name);
+  return names;
+}
+
+void Responses::gradients(const Vector& xOwned, const std::vector<std::string>& names, const Mesh& mesh,
+                          const DofMap& dofMap, const Assembler& assembler, const std::vector<ContactWall>& walls,
+                          MultiVector& gradient) const {
+  gradient.putScalar(0.0);
+  if (names.empty()) return;
+  Vector reactions(dofMap.ownedMap()), xOverlap(dofMap.overlapMap());
+  assembler.residual(xOwned, reactions, false);
+  xOverlap.doImport(xOwned, *dofMap.importer(), Tpetra::INSERT);
+  // Variables: the overlap dofs of x, then the owned dofs of the reactions.
+  const int numOverlap = static_cast<int>(xOverlap.getLocalLength());
+  const int numOwned = static_cast<int>(reactions.getLocalLength());
+  Workset x = vectorReader(xOverlap), R = vectorReader(reactions);
+  x.gradientSize = R.gradientSize = numOverlap + numOwned;
+  R.gradientOffset = numOverlap;
+  const MaterialParameters<GradientFad> material = materialFor<GradientFad>(assembler.physics().material, nullptr);
+  const ResponseContext<GradientFad> context{x, R, mesh, dofMap, assembler.physics(), material, walls, nullptr};
+
+  MultiVector byX(dofMap.overlapMap(), names.size()), byReactions(dofMap.ownedMap(), names.size());
+  bool readsReactions = false;
+  {
+    auto gx = byX.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    auto gR = byReactions.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    Kokkos::deep_copy(gx, 0.0);
+    Kokkos::deep_copy(gR, 0.0);
+    for (size_t i = 0; i < names.size(); ++i) {
+      const auto r = std::find_if(m_responses.begin(), m_responses.end(), [&](const Response& q) { return q.name == names[i]; });
+      if (r == m_responses.end() || !responseTypes()[r->type].differentiable)
+        throw std::logic_error("Responses::gradients: '" + names[i] + "' is not a differentiable response");
+      const GradientFad phi = r->function->gradient(context);
+      if (phi.size() == 0) continue;  // independent of q
+      for (int d = 0; d < numOverlap; ++d) gx(d, i) = phi.dx(d);
+      for (int d = 0; d < numOwned; ++d) {
+        gR(d, i) = phi.dx(numOverlap + d);
+        readsReactions = readsReactions || gR(d, i) != 0.0;
+      }
+    }
+  }
+  // A rank's derivatives by its ghost dofs belong to their owners.
+  gradient.doExport(byX, *dofMap.exporter(), Tpetra::ADD);
+  int anyReactions = readsReactions, globalReactions = 0;
+  Teuchos::reduceAll(*dofMap.comm(), Teuchos::REDUCE_MAX, anyReactions, Teuchos::outArg(globalReactions));
+  if (globalReactions) {
+    auto unconstrained = assembler.createJacobian();
+    assembler.unconstrainedJacobian(xOwned, *unconstrained);
+    unconstrained->apply(byReactions, gradient, Teuchos::TRANS, 1.0, 1.0);
+  }
 }
 
 std::map<std::string, double> Responses::derivatives(const Vector& xOwned, const Vector& dxOwned,

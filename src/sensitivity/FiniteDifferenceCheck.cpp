@@ -51,8 +51,11 @@ FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, con
   const auto& parameters = sensitivity.parameters();
   for (const auto& [response, value] : base.functionals)
     if (sensitivity.responseDerivatives().count(response)) m_names.push_back(response);
-  m_names.push_back("velocity_field");
-  m_names.push_back("pressure_field");
+  const bool fields = sensitivity.hasSolutionDerivatives();  // not with Method = Adjoint
+  if (fields) {
+    m_names.push_back("velocity_field");
+    m_names.push_back("pressure_field");
+  }
   m_ddm = sensitivity.responseDerivatives();
   m_differences = Teuchos::rcp(new MultiVector(base.x->getMap(), parameters.size()));
   const BudgetScope scope("the finite-difference check", [&] { return std::to_string(m_runs) + " run(s)"; });
@@ -117,6 +120,10 @@ FiniteDifferenceCheck::FiniteDifferenceCheck(const Sensitivity& sensitivity, con
             << relativeDifference(e.diff, e.ddm, e.fd) << (pr.unchangedSide == "both" ? "" : " (one-sided)") << "\n";
     }
     m_differences->getVectorNonConst(j)->update(1.0 / (2 * pr.delta), *plus.x, -1.0 / (2 * pr.delta), *minus.x, 0.0);
+    if (!fields) {
+      m_parameters.push_back(pr);
+      continue;
+    }
     const Vector ddmField = *sensitivity.solutionDerivatives().getVector(j);
     for (bool velocity : {true, false}) {
       double n[7];

@@ -1,8 +1,10 @@
 #include "flowform/sensitivity/Sensitivity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
+#include <Teuchos_SerialDenseMatrix.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <nlohmann/json.hpp>
@@ -33,6 +35,7 @@ static void buildValidParameters(const ValidList& valid) {
   }
   valid->set("Parameters", Teuchos::Array<std::string>(),
              "parameters h to differentiate by: Friction Coefficient (every wall's ν), Friction Coefficient:<wall>, "
+             "Friction Field:<wall>/<j> (station j of a wall's Friction Field), "
              "Shear Factor, Shear Factor:<wall>, the sensitivity parameters of the case's Material/Law (" +
                  materialNames + "), Geo Parameter:<name> (a Mesh/Geo Parameters entry), Boundary Value:<group>/<entry> "
                  "(a boundary condition's Velocity X/Y, Temperature, Heat Transfer Coefficient, Ambient or Tool "
@@ -54,6 +57,16 @@ static void buildValidParameters(const ValidList& valid) {
       "contact penalty scales in the check's runs: Held (the base run's, as the DDM holds them: checks the DDM) or "
       "Recomputed (from the start state at h ± δ, as a fresh solve would: measures what holding them neglects)",
       Teuchos::tuple<std::string>("Held", "Recomputed"), valid.get());
+  valid->set("Responses", Teuchos::Array<std::string>(),
+             "the responses to differentiate (each a differentiable response of the case); empty: all of them. "
+             "Method = Adjoint solves one adjoint per response named");
+  Teuchos::setStringToIntegralParameter<int>(
+      "Method", "Direct",
+      "Direct (dq/dh for every parameter, one back-substitution each: the sensitivity fields, the total derivative "
+      "through free surfaces) or Adjoint (one transposed back-substitution per response, dphi/dh = dphi/dh|_q - "
+      "lambda.dR/dh: for many parameters and few responses; no fields, no free-surface total derivative, no Rigid "
+      "Inflow)",
+      Teuchos::tuple<std::string>("Direct", "Adjoint"), valid.get());
   Teuchos::setStringToIntegralParameter<int>(
       "Shape Derivative", "Total",
       "with free surfaces: Total (the derivatives through the moving surfaces as well, sensitivities_total_shape; "
@@ -101,6 +114,21 @@ Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<C
   m_holdScales = list->get<std::string>("Finite Difference Scales") == "Held";
   m_lastNewtonJacobian = list->get<std::string>("Jacobian") == "Last Newton Iterate";
   m_totalShapeRequested = list->get<std::string>("Shape Derivative") == "Total";
+  m_adjoint = list->get<std::string>("Method") == "Adjoint";
+  const std::vector<std::string> differentiable = responses.differentiableNames();
+  for (const std::string& given : list->get<Teuchos::Array<std::string>>("Responses")) {
+    const std::string name = trim(given);
+    if (name.empty()) continue;
+    if (std::find(differentiable.begin(), differentiable.end(), name) == differentiable.end())
+      throw InputError("Sensitivity/Responses: '" + name + "' is not a differentiable response of the case; they are: " +
+                       join(differentiable, ", "));
+    if (std::find(m_responseNames.begin(), m_responseNames.end(), name) == m_responseNames.end())
+      m_responseNames.push_back(name);
+  }
+  if (m_responseNames.empty()) m_responseNames = differentiable;
+  if (m_adjoint && m_lastNewtonJacobian)
+    throw InputError("Sensitivity/Jacobian: 'Last Newton Iterate' is for Method = Direct; the adjoint needs the exact "
+                     "K_t at the converged q (its transpose is solved): use Jacobian = Converged");
   if (m_check)
     for (const std::string& name : responses.names())
       for (const char* reserved : kFieldEntries)
@@ -115,6 +143,7 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("flowform: sensitivity"));
   const int factorizations0 = model.linearSolver().numFactorizations();
   const int solves0 = model.linearSolver().numSolves();
+  m_computed = false;
 
   // A Geo Parameter's ∂R/∂h (and ∂φ/∂h, ∂F/∂h) from the mesh moved along its motion, before the
   // factors (a moved mesh drops them).
@@ -150,20 +179,18 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
     }
   }
 
+  if (m_adjoint) {
+    computeByAdjoint(model, x, responses, mesh, dofMap, walls, meshPartials);
+    m_factorizations = model.linearSolver().numFactorizations() - factorizations0;
+    m_solves = model.linearSolver().numSolves() - solves0;
+    return;
+  }
+
   // K_t dq/dh_j = −∂R/∂h_j: one MultiVector, one back-substitution per column.
   const size_t numParameters = m_parameters.size();
   MultiVector rhs(x.getMap(), numParameters);
   m_dqdh = Teuchos::rcp(new MultiVector(x.getMap(), numParameters));
-  for (size_t j = 0; j < numParameters; ++j) {
-    auto column = rhs.getVectorNonConst(j);
-    const auto partials = meshPartials.find(m_parameters[j].name);
-    if (partials != meshPartials.end()) {
-      column->update(-1.0, *partials->second.dRdh, 0.0);
-      continue;
-    }
-    model.assembler().parameterDerivative(x, m_parameters[j], *column);
-    column->scale(-1.0);
-  }
+  assembleParameterLoads(model, x, meshPartials, rhs);
   model.solve(rhs, *m_dqdh);
   m_rhsNorms.assign(numParameters, 0.0);
   m_solutionNorms.assign(numParameters, 0.0);
@@ -205,15 +232,87 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
                                          walls);
     const auto partials = meshPartials.find(m_parameters[j].name);
     for (const auto& [name, value] : d) {
+      if (std::find(m_responseNames.begin(), m_responseNames.end(), name) == m_responseNames.end()) continue;
       m_responseDerivatives[name][m_parameters[j].name] =
           value + (partials != meshPartials.end() ? partials->second.dPhidh.at(name) : 0.0);
       log() << "sensitivity:   d" << name << "/dh = " << m_responseDerivatives[name][m_parameters[j].name] << "\n";
     }
   }
+  m_computed = m_finite;
   if (!m_finite) {
     log() << "sensitivity: dq/dh is not finite (singular Jacobian?)\n";
-    m_dqdh = Teuchos::null;  // computed() is false: no NaN fields are written
+    m_dqdh = Teuchos::null;  // no NaN fields are written
   }
+}
+
+void Sensitivity::assembleParameterLoads(FlowModel& model, const Vector& x,
+                                         const std::map<std::string, MeshPartials>& partials, MultiVector& rhs) const {
+  for (size_t j = 0; j < m_parameters.size(); ++j) {
+    auto column = rhs.getVectorNonConst(j);
+    const auto given = partials.find(m_parameters[j].name);
+    if (given != partials.end()) {
+      column->update(-1.0, *given->second.dRdh, 0.0);
+      continue;
+    }
+    model.assembler().parameterDerivative(x, m_parameters[j], *column);
+    column->scale(-1.0);
+  }
+}
+
+void Sensitivity::computeByAdjoint(FlowModel& model, const Vector& x, const Responses& responses, const Mesh& mesh,
+                                   const DofMap& dofMap, const std::vector<ContactWall>& walls,
+                                   const std::map<std::string, MeshPartials>& partials) {
+  // K_tᵀ λ_φ = (∂φ/∂q)ᵀ: one MultiVector, one transposed back-substitution per response.
+  m_adjointNames = m_responseNames;
+  const size_t numResponses = m_adjointNames.size(), numParameters = m_parameters.size();
+  m_responseDerivatives.clear();
+  m_rhsNorms.assign(numParameters, 0.0);
+  m_solutionNorms.clear();
+  m_finite = true;
+  if (numResponses > 0) {
+    MultiVector gradient(x.getMap(), numResponses), lambda(x.getMap(), numResponses);
+    responses.gradients(x, m_adjointNames, mesh, dofMap, model.assembler(), walls, gradient);
+    model.solveTranspose(gradient, lambda);
+    m_solutionNorms.assign(numResponses, 0.0);
+    lambda.norm2(Teuchos::ArrayView<double>(m_solutionNorms));
+    for (double n : m_solutionNorms) m_finite = m_finite && std::isfinite(n);
+    if (!m_finite) {
+      log() << "sensitivity: an adjoint is not finite (singular Jacobian?)\n";
+      return;
+    }
+    // −∂R/∂h_j for every parameter, then dφ/dh_j = ∂φ/∂h_j + λ_φ·(−∂R/∂h_j).
+    MultiVector loads(x.getMap(), numParameters);
+    assembleParameterLoads(model, x, partials, loads);
+    loads.norm2(Teuchos::ArrayView<double>(m_rhsNorms));
+    Teuchos::SerialDenseMatrix<int, double> products(static_cast<int>(numResponses), static_cast<int>(numParameters));
+    for (size_t i = 0; i < numResponses; ++i)
+      for (size_t j = 0; j < numParameters; ++j)
+        products(static_cast<int>(i), static_cast<int>(j)) = lambda.getVector(i)->dot(*loads.getVector(j));
+    for (size_t j = 0; j < numParameters; ++j) {
+      const SensitivityParameter& h = m_parameters[j];
+      const auto given = partials.find(h.name);
+      const std::map<std::string, double> explicitPart = responses.partials(x, h, mesh, dofMap, model.assembler(), walls);
+      log() << "sensitivity: " << h.name << ": |dR/dh| = " << m_rhsNorms[j] << " (adjoint)\n";
+      for (size_t i = 0; i < numResponses; ++i) {
+        const std::string& name = m_adjointNames[i];
+        const double value = explicitPart.at(name) + (given != partials.end() ? given->second.dPhidh.at(name) : 0.0) +
+                             products(static_cast<int>(i), static_cast<int>(j));
+        m_responseDerivatives[name][h.name] = value;
+        log() << "sensitivity:   d" << name << "/dh = " << value << "\n";
+      }
+    }
+  }
+  m_computed = true;
+}
+
+void Sensitivity::checkMethod(bool rigidInflow, bool freeSurfaces) const {
+  if (!m_adjoint || !requested()) return;
+  if (rigidInflow)
+    throw InputError("Sensitivity/Method: Adjoint does not handle a Rigid Inflow (its speed's bordered system needs "
+                     "dq/dh); use Method = Direct");
+  if (freeSurfaces && m_totalShapeRequested)
+    throw InputError("Sensitivity/Method: Adjoint gives no dq/dh, which the total derivative through the free "
+                     "surfaces needs; use Method = Direct, or Shape Derivative = Frozen");
 }
 
 void Sensitivity::report(nlohmann::json& summary) const {
@@ -225,18 +324,23 @@ void Sensitivity::report(nlohmann::json& summary) const {
   nlohmann::json parameters = nlohmann::json::array();
   for (size_t j = 0; j < m_parameters.size(); ++j) {
     nlohmann::json p = {{"name", m_parameters[j].name}, {"symbol", m_parameters[j].symbol}};
-    if (j < m_rhsNorms.size()) {
-      p["dR_dh_norm"] = m_rhsNorms[j];
-      p["dq_dh_norm"] = m_solutionNorms[j];
-    }
+    if (j < m_rhsNorms.size()) p["dR_dh_norm"] = m_rhsNorms[j];
+    if (!m_adjoint && j < m_solutionNorms.size()) p["dq_dh_norm"] = m_solutionNorms[j];
     parameters.push_back(p);
   }
   summary["sensitivity"] = {{"parameters", parameters},
+                            {"method", m_adjoint ? "adjoint" : "direct"},
                             {"factorizations", m_factorizations},
                             {"solves", m_solves},
                             {"jacobian", m_jacobianUsed.empty() ? nlohmann::json(nullptr) : nlohmann::json(m_jacobianUsed)},
                             {"jacobian_offset", m_jacobianOffset},
                             {"finite", m_finite}};
+  if (m_adjoint) {
+    nlohmann::json adjoints = nlohmann::json::object();
+    for (size_t i = 0; i < m_adjointNames.size() && i < m_solutionNorms.size(); ++i)
+      adjoints[m_adjointNames[i]] = m_solutionNorms[i];
+    summary["sensitivity"]["adjoint_norms"] = adjoints;
+  }
   if (m_inflow)
     summary["sensitivity"]["rigid_inflow"] = {{"force_slope", m_inflowForceSlope},
                                               {"speed_derivatives", m_inflowSpeedDerivatives}};

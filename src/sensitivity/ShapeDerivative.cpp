@@ -28,7 +28,7 @@ void ShapeDerivative::report(nlohmann::json& summary) const {
 ShapeDerivative totalShapeDerivative(Problem& problem, const Sensitivity& sensitivity) {
   const auto start = std::chrono::steady_clock::now();
   ShapeDerivative out;
-  if (!sensitivity.computed()) {
+  if (!sensitivity.hasSolutionDerivatives()) {
     out.failure = "no DDM sensitivities to extend";
     return out;
   }

@@ -7,6 +7,9 @@
 //   TangentEval    TangentFad = SFad<1>      x seeded along a direction dx and a parameter h
 //                                            seeded (derivative 1): J dx + ∂F/∂h in one pass,
 //                                            ∂F/∂h with dx = 0
+//   (responses)    GradientFad = DFad        every dof of a workset its own independent variable
+//                                            (slot = offset + dof): a response's gradient ∂φ/∂q,
+//                                            the adjoint's right-hand side (responses/Responses.hpp)
 //
 // gather() reads an element's dofs from the workset and seeds them as the type wants;
 // scatter() adds the element rows back (values, matrix rows, or directional derivatives).
@@ -29,6 +32,9 @@
 namespace flowform {
 
 using TangentFad = Sacado::Fad::SFad<double, 1>;
+/// A response's gradient: one derivative component per dof a response may read (its size is set
+/// by the workset, Workset::gradientSize).
+using GradientFad = Sacado::Fad::DFad<double>;
 
 struct ResidualEval {
   template <int N>
@@ -94,8 +100,10 @@ FrictionParameters<PScalar> frictionFor(const ContactWall& wall, int w, const Se
     auto seed = [&](double value, ParameterKind kind) {
       return seeded && h->kind == kind ? PScalar(1, 0, value) : PScalar(value);
     };
-    return {seed(fp.frictionCoefficient, ParameterKind::FrictionCoefficient),
-            seed(fp.shearFactor, ParameterKind::ShearFactor)};
+    FrictionParameters<PScalar> out{seed(fp.frictionCoefficient, ParameterKind::FrictionCoefficient),
+                                        seed(fp.shearFactor, ParameterKind::ShearFactor)};
+    if (seeded && h->kind == ParameterKind::FrictionField) out.seededStation = h->station;
+    return out;
   }
 }
 
@@ -112,6 +120,8 @@ struct Workset {
   bool hasResidual = false;
   FECrsMatrix* jacobian = nullptr;
   NewtonDual* dual = nullptr;  ///< Jacobian only: the dual linearizations (null: exact)
+  /// GradientFad only: dof d is independent variable gradientOffset + d of gradientSize.
+  int gradientSize = 0, gradientOffset = 0;
 };
 
 /// The element's dofs at overlap dofs `dofs[0..n)` (−1: an absent neighbour, value 0 and
@@ -127,6 +137,8 @@ void gather(const Workset& ws, const LO* dofs, int n, Scalar* out) {
       out[i] = ws.x(d, 0);
     } else if constexpr (std::is_same_v<Scalar, TangentFad>) {
       out[i] = dual<TangentFad>(ws.x(d, 0), ws.hasDirection ? ws.dx(d, 0) : 0.0);
+    } else if constexpr (std::is_same_v<Scalar, GradientFad>) {
+      out[i] = GradientFad(ws.gradientSize, ws.gradientOffset + d, ws.x(d, 0));
     } else {
       out[i] = Scalar(n, i, ws.x(d, 0));
     }

@@ -6,6 +6,8 @@
 //   "Friction Coefficient"              ν of every wall whose law uses it, moved together
 //   "Friction Coefficient:<wall group>" ν of one wall
 //   "Shear Factor", "Shear Factor:<wall group>"   m, likewise
+//   "Friction Field:<wall group>/<j>"   ν_j, station j's value of a wall's Friction Field
+//                                       (contact/ContactWall.hpp: ν linear between stations)
 //   a material law's parameter, e.g. the power law's "Yield Stress" σ0, "Rate Constant" γ,
 //   "Rate Exponent" n, or Sellars–Tegart's "Activation Energy" Q, "Temperature" T, ...
 //   "Geo Parameter:<name>"              a shape parameter: a Mesh/Geo Parameters entry of the
@@ -36,13 +38,14 @@ namespace flowform {
 struct FlowPhysics;
 
 /// The friction parameters, one of the material law's (which: `material`), or a .geo constant.
-enum class ParameterKind { FrictionCoefficient, ShearFactor, Material, GeoParameter, BoundaryValue, Thermal };
+enum class ParameterKind { FrictionCoefficient, ShearFactor, FrictionField, Material, GeoParameter, BoundaryValue, Thermal };
 
 struct SensitivityParameter {
   std::string name;    ///< as the case gives it, e.g. "Friction Coefficient:<wall group>"
   std::string symbol;  ///< for field and column names: nu, nu_<wall group>, m, the law's (sigma0, gamma, n, ...)
   ParameterKind kind = ParameterKind::Material;
   int wall = -1;       ///< friction parameters: the wall's index, −1 for every wall
+  int station = -1;    ///< a Friction Field's station
   int material = -1;   ///< material parameters: the index in MaterialParameters::values
   int thermal = -1;    ///< thermal properties: the index (ThermalParameter) in FlowPhysics::thermal
   bool relativeStep = false;  ///< the finite-difference step is relative (the law says)
@@ -57,10 +60,14 @@ struct SensitivityParameter {
   /// AD seeding of a coefficient.
   bool partialsFromProblem() const { return isGeo() || isBoundaryValue(); }
 
-  bool isFriction() const { return kind == ParameterKind::FrictionCoefficient || kind == ParameterKind::ShearFactor; }
+  bool isFriction() const {
+    return kind == ParameterKind::FrictionCoefficient || kind == ParameterKind::ShearFactor ||
+           kind == ParameterKind::FrictionField;
+  }
   /// Whether this parameter enters wall `w`'s law.
   bool entersWall(int w, const ContactWall& wall) const {
     if (!isFriction() || (this->wall >= 0 && this->wall != w)) return false;
+    if (kind == ParameterKind::FrictionField) return wall.hasFrictionField();
     return kind == ParameterKind::FrictionCoefficient ? wall.usesFrictionCoefficient() : wall.usesShearFactor();
   }
   /// The finite-difference step for a requested step s: absolute (δ = s) for the

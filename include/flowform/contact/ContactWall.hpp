@@ -29,9 +29,11 @@
 // wall's penalty along that wall's normal, so both velocity components are held there.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
@@ -199,15 +201,19 @@ class ContactWall {
     std::vector<char> active, inContact;
     std::vector<int> changes;
     FrictionParameters<double> friction;
+    std::vector<double> frictionField;
     std::vector<double> viscosity, flowStress;
   };
-  State state() const { return {m_active, m_inContact, m_changes, frictionParameters(), m_viscosity, m_flowStress}; }
+  State state() const {
+    return {m_active, m_inContact, m_changes, frictionParameters(), m_settings.frictionField, m_viscosity, m_flowStress};
+  }
   void restore(const State& s) {
     m_active = s.active;
     m_inContact = s.inContact;
     m_changes = s.changes;
     setFrictionCoefficient(s.friction.frictionCoefficient);
     setShearFactor(s.friction.shearFactor);
+    m_settings.frictionField = s.frictionField;
     m_viscosity = s.viscosity;
     m_flowStress = s.flowStress;
   }
@@ -226,6 +232,24 @@ class ContactWall {
   /// Per wall node: viscosity μ and flow stress σ̄ (largest over the adjacent cells).
   void setScales(std::vector<double> viscosity, std::vector<double> flowStress);
   void setFrictionCoefficient(double nu) { m_settings.frictionCoefficient = nu; }
+  /// Friction Field (docs/contact.md "Friction fields"): ν given at N + 1 stations s_j = j L/N along
+  /// the wall (s the arc length from the curve's first node, the curve running with the material
+  /// on its left; L the wall's length), linear between them; node k's ν is the field at s_k.
+  bool hasFrictionField() const { return !m_settings.frictionField.empty(); }
+  int numFieldStations() const { return static_cast<int>(m_settings.frictionField.size()); }
+  double fieldValue(int station) const { return m_settings.frictionField[station]; }
+  void setFieldValue(int station, double nu) { m_settings.frictionField[station] = nu; }
+  /// ν, or the largest value of the Friction Field.
+  double largestFrictionCoefficient() const {
+    double nu = m_settings.frictionCoefficient;
+    for (double v : m_settings.frictionField) nu = std::max(nu, v);
+    return nu;
+  }
+  /// Where station j lies (on the wall as made).
+  std::array<double, 2> stationPoint(int station) const;
+  /// ν at node k: the field's (with its derivative by the seeded station, fp.seededStation), or fp's ν.
+  template <typename PScalar>
+  PScalar nodeFrictionCoefficient(int k, const FrictionParameters<PScalar>& fp) const;
   void setShearFactor(double m) { m_settings.shearFactor = m; }
   /// Nodes at rest without compression stick (FrictionSettings::stickAtRest).
   void setStickAtRest(bool on) { m_settings.friction.stickAtRest = on; }
@@ -370,6 +394,10 @@ class ContactWall {
   bool m_firstIsUpstream = true;  ///< firstNodeIsUpstream()
   int m_upstreamEnd = -1;  ///< Released Nodes = Free Surface: the wall node shared with the Start Group
   std::vector<double> m_viscosity, m_flowStress;
+  /// A Friction Field: node k lies between stations m_fieldStation[k] and the next, at fraction
+  /// m_fieldFraction[k] of the way (refreshGeometry).
+  std::vector<int> m_fieldStation;
+  std::vector<double> m_fieldFraction;
   std::vector<std::array<double, 2>> m_coords;
   /// The tool: the node positions and normals as made. A wall whose released tail is a free
   /// surface keeps these normals when its nodes move (the tool does not turn with the material).
@@ -481,9 +509,32 @@ Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp
     const Scalar normalForce = m_settings.normalPenalty * m_viscosity[k] * weight(k) * un;
     d.pressureIntegral = normalForce > 0.0 ? normalForce : Scalar(0.0);
   }
+  if (hasFrictionField()) {
+    FrictionParameters<PScalar> local = fp;
+    local.frictionCoefficient = nodeFrictionCoefficient(k, fp);
+    const FrictionForce<Scalar> f = frictionForce(m_settings.law, d, local, m_settings.friction);
+    if (branch) *branch = f.branch;
+    return f.g;
+  }
   const FrictionForce<Scalar> f = frictionForce(m_settings.law, d, fp, m_settings.friction);
   if (branch) *branch = f.branch;
   return f.g;
+}
+
+template <typename PScalar>
+PScalar ContactWall::nodeFrictionCoefficient(int k, const FrictionParameters<PScalar>& fp) const {
+  if (!hasFrictionField()) return fp.frictionCoefficient;
+  const int j = m_fieldStation[k];
+  const double w = m_fieldFraction[k];
+  const double value = (1.0 - w) * m_settings.frictionField[j] + w * m_settings.frictionField[j + 1];
+  if constexpr (std::is_same_v<PScalar, double>) {
+    return value;
+  } else {
+    if (fp.seededStation < 0) return PScalar(value);
+    PScalar nu(1, 0, value);  // the derivative by station fp.seededStation: its hat function at s_k
+    nu.fastAccessDx(0) = (fp.seededStation == j ? 1.0 - w : 0.0) + (fp.seededStation == j + 1 ? w : 0.0);
+    return nu;
+  }
 }
 
 template <typename Scalar, typename PScalar>

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "flowform/contact/ToolMotion.hpp"
 #include "flowform/contact/friction/FrictionLaw.hpp"
@@ -13,6 +14,8 @@ namespace flowform {
 struct ContactWallSettings {
   int law = 0;                       ///< index in frictionLaws()
   double frictionCoefficient = 0.0;  ///< ν
+  /// Friction Field: ν at N + 1 equally spaced stations along the wall (empty: ν everywhere).
+  std::vector<double> frictionField;
   double shearFactor = 0.0;          ///< m
   FrictionSettings friction;         ///< the law's own constants
   double normalPenalty = 1e3;        ///< κ_n

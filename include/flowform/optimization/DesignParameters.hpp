@@ -5,6 +5,7 @@
 //   Boundary Value:<group>/<entry>  Boundary Conditions/<group>/<entry>
 //   Friction Coefficient[:<wall>]   Boundary Conditions/<wall>/Friction Coefficient (every wall that
 //   Shear Factor[:<wall>]           gives it, moved together, without a wall name), the same for m
+//   Friction Field:<wall>/<j>       Boundary Conditions/<wall>/Friction Field, its value j
 //   Thermal:<property>              Material/Thermal/<property>
 //   <a law's constant>              Material/<name>
 // Each starts from the case's value, which must lie within its bounds.
@@ -41,6 +42,7 @@ class DesignParameters {
   using Path = std::vector<std::string>;
   std::vector<std::string> m_names;
   std::vector<std::vector<Path>> m_paths;
+  std::vector<int> m_elements;  ///< per parameter: the index in an array entry, −1 for a number
   std::vector<double> m_initial;
 };
 

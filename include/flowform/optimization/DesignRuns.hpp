@@ -35,8 +35,9 @@ struct DesignNotSolved : std::runtime_error {
 
 class DesignRuns {
  public:
+  /// `responses`: what the objective reads, the only responses each solve differentiates.
   DesignRuns(const Teuchos::ParameterList& caseParams, CaseRunFactory factory, const DesignParameters& design,
-             bool warmStart);
+             bool warmStart, const std::vector<std::string>& responses);
 
   /// The solution at `design` (solved now unless it is the last one solved).
   const DesignSolution& at(const std::vector<double>& design);

@@ -5,9 +5,10 @@
 // TangentFad (EvaluationTypes.hpp) for its total derivative along a direction (dq/dh, h),
 //   dφ/dh = ∂φ/∂h + ∂φ/∂q dq/dh   (docs/theory.md §4, paper eq. 21),
 // with x seeded along dq/dh, the material and friction parameters seeded by h, and the reactions'
-// derivative from Assembler::tangent. A response never seeds or reads derivatives itself: the
-// same code gives the value, the DDM derivative, a finite difference of two values or (later)
-// an adjoint's seed.
+// derivative from Assembler::tangent; GradientFad for its gradient by the solution and the
+// reactions, ∂φ/∂x and ∂φ/∂R_unc, every dof its own variable (the adjoint's right-hand side,
+// Responses::gradients). A response never seeds or reads derivatives itself: the same code
+// gives the value, the DDM derivative, a finite difference of two values and the adjoint's seed.
 #pragma once
 
 #include <array>
@@ -50,9 +51,12 @@ struct ResponseContext {
 /// A workset that reads `x` (and the direction `dx`) on their own map.
 Workset vectorReader(const Vector& x, const Vector* dx = nullptr);
 
-/// Σ over the ranks (the derivative summed with the value).
+/// Σ over the ranks (the derivative summed with the value). A gradient keeps this rank's
+/// derivatives: they are by this rank's dofs, and the ranks' gradients add up to the global one
+/// (every later operation is evaluated at the same global values on every rank).
 double sumOverRanks(const Comm& comm, double local);
 TangentFad sumOverRanks(const Comm& comm, const TangentFad& local);
+GradientFad sumOverRanks(const Comm& comm, const GradientFad& local);
 
 /// The length of the curve, or the area 2π r ds it sweeps when axisymmetric (the same on
 /// every rank: the curve is replicated).

@@ -11,7 +11,7 @@
 //   kReactionBased    it sums the reactions R_unc(x) (the unconstrained momentum residual)
 //   kAdaptivityTarget it is linear in the reactions, φ = c·R_unc(x), and gives c
 //                     (reactionWeights): its adjoint gives the adaptive loop's indicators
-//   kDifferentiable   it has a derivative (evaluate<TangentFad>); false for the piecewise
+//   kDifferentiable   it has a derivative (evaluate<TangentFad>, and its gradient evaluate<GradientFad>); false for the piecewise
 //                     constant ones (Dead Zone, Contact Length), which have evaluate(double) only
 //   kNeedsTemperature (optional, false when absent) it reads the Temperature field
 // and, optionally, members of an instance:
@@ -81,6 +81,8 @@ class ResponseFunction {
   virtual double value(const ResponseContext<double>& c) const = 0;
   /// The value and directional derivative; only for a differentiable type.
   virtual TangentFad derivative(const ResponseContext<TangentFad>& c) const = 0;
+  /// The value and the gradient by every dof of the context's worksets; only for a differentiable type.
+  virtual GradientFad gradient(const ResponseContext<GradientFad>& c) const = 0;
   /// φ = c·R_unc(x): writes c (owned map, zeroed first) and returns true for an adaptivity
   /// target; false (c untouched) for the others.
   virtual bool reactionWeights(const Mesh& mesh, const DofMap& dofMap, Geometry geometry, Vector& c) const = 0;

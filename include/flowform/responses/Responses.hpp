@@ -51,6 +51,21 @@ class Responses {
                                             const Mesh& mesh, const DofMap& dofMap, const Assembler& assembler,
                                             const std::vector<ContactWall>& walls) const;
 
+  /// ∂φ/∂h at fixed q of every differentiable response: the derivative along (0, h), the same on
+  /// every rank (the explicit part of the adjoint's dφ/dh).
+  std::map<std::string, double> partials(const Vector& xOwned, const SensitivityParameter& h, const Mesh& mesh,
+                                         const DofMap& dofMap, const Assembler& assembler,
+                                         const std::vector<ContactWall>& walls) const;
+
+  /// The gradient ∂φ/∂q at x of each response in `names` (differentiable ones: differentiableNames()),
+  /// column i of `gradient` (owned map) for names[i]. Each response is evaluated once on GradientFad,
+  /// every dof of x and of the reactions R_unc(x) its own variable; the reactions' part is carried to
+  /// q by the unconstrained Jacobian: ∂φ/∂q = ∂φ/∂x + J_uncᵀ ∂φ/∂R (docs/sensitivity.md "Adjoint").
+  void gradients(const Vector& xOwned, const std::vector<std::string>& names, const Mesh& mesh, const DofMap& dofMap,
+                 const Assembler& assembler, const std::vector<ContactWall>& walls, MultiVector& gradient) const;
+  /// The names of the responses that have a derivative, in the case's order.
+  std::vector<std::string> differentiableNames() const;
+
   /// For a response linear in the reactions (an adaptivity target), φ = c·R_unc(x) (Boundary
   /// Force: c = e_X or e_Y on the group's nodes; Mean Pressure: c = −n/A), c on the owned map;
   /// false (c untouched) for the other types. The adjoint of the error estimates starts from it.

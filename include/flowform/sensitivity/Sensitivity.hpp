@@ -9,6 +9,12 @@
 //
 // Cost: K_t is factored once for all parameters and each parameter costs one back-
 // substitution (all right-hand sides go to the direct solver as one MultiVector).
+//
+// Method = Adjoint (docs/sensitivity.md "Adjoint"): with λ_φ from K_tᵀ λ_φ = (∂φ/∂q)ᵀ, one
+// transposed back-substitution per response,
+//     dφ/dh = ∂φ/∂h − λ_φ · ∂R/∂h,
+// the same number in exact arithmetic, for many parameters and few responses; no dq/dh is made
+// (no sensitivity fields; no total derivative through free surfaces; no Rigid Inflow).
 // "Jacobian" chooses the factors: "Converged" assembles and factors K_t at the converged q
 // (one factorization); "Last Newton Iterate" reuses the factors NOX leaves, which belong to
 // the iterate before the converged one (no factorization; docs/sensitivity.md measures what
@@ -80,8 +86,16 @@ class Sensitivity {
   /// The mesh velocity V = dX/dh of each Geo Parameter (by name), after compute().
   const std::map<std::string, std::vector<std::array<double, 2>>>& geoMotions() const { return m_geoMotions; }
 
-  bool computed() const { return !m_dqdh.is_null(); }
-  /// Column j is dq/dh_j (owned map). Only after compute().
+  /// Whether the derivatives were computed (compute() ran and they are finite).
+  bool computed() const { return m_computed; }
+  /// Method = Adjoint: the responses' derivatives by λ_φ, without dq/dh.
+  bool adjoint() const { return m_adjoint; }
+  /// InputError when the case needs dq/dh and the method gives none: Method = Adjoint with a Rigid
+  /// Inflow (`rigidInflow`), or with free surfaces (`freeSurfaces`) and Shape Derivative = Total.
+  void checkMethod(bool rigidInflow, bool freeSurfaces) const;
+  /// Whether dq/dh was made (Method = Direct, after compute()).
+  bool hasSolutionDerivatives() const { return !m_dqdh.is_null(); }
+  /// Column j is dq/dh_j (owned map). Only when hasSolutionDerivatives().
   const MultiVector& solutionDerivatives() const { return *m_dqdh; }
   /// dφ/dh: response name → parameter name → value.
   const std::map<std::string, std::map<std::string, double>>& responseDerivatives() const {
@@ -102,7 +116,13 @@ class Sensitivity {
   bool m_holdScales = true;
   bool m_lastNewtonJacobian = false;
   bool m_totalShapeRequested = true;
+  bool m_adjoint = false;
+  bool m_computed = false;
   std::map<std::string, std::map<std::string, double>> m_totalShape;
+  /// The responses to differentiate (Responses; all the differentiable ones by default).
+  std::vector<std::string> m_responseNames;
+  /// Method = Adjoint: the responses whose adjoints λ_φ were solved (one column each).
+  std::vector<std::string> m_adjointNames;
 
   Teuchos::RCP<MultiVector> m_dqdh;
   std::map<std::string, std::map<std::string, double>> m_responseDerivatives;
@@ -116,6 +136,14 @@ class Sensitivity {
   double m_inflowForceSlope = 0.0;
   std::map<std::string, double> m_inflowSpeedDerivatives;
   std::map<std::string, std::vector<std::array<double, 2>>> m_geoMotions;
+
+  /// −∂R/∂h_j into column j of `rhs` for every parameter (the mesh's partials where given).
+  void assembleParameterLoads(FlowModel& model, const Vector& x, const std::map<std::string, MeshPartials>& partials,
+                              MultiVector& rhs) const;
+  /// Method = Adjoint: dφ/dh = ∂φ/∂h − λ_φ·∂R/∂h with K_t factored at x.
+  void computeByAdjoint(FlowModel& model, const Vector& x, const Responses& responses, const Mesh& mesh,
+                        const DofMap& dofMap, const std::vector<ContactWall>& walls,
+                        const std::map<std::string, MeshPartials>& partials);
 };
 
 }  // namespace flowform

@@ -26,6 +26,8 @@ template <typename PScalar>
 struct FrictionParameters {
   PScalar frictionCoefficient;  ///< ν (Coulomb, Orowan)
   PScalar shearFactor;          ///< m (Tresca, Orowan)
+  /// A wall with a Friction Field: the station whose value is seeded (the derivative by it), −1 none.
+  int seededStation = -1;
 };
 
 /// Which branch of the law a wall node is on (a kink of the law lies between branches):
