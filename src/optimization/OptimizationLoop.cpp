@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <ROL_Bounds.hpp>
+#include <Teuchos_LAPACK.hpp>
 #include <ROL_OptimizationProblem.hpp>
 #include <ROL_OptimizationSolver.hpp>
 #include <ROL_StdVector.hpp>
@@ -55,6 +56,52 @@ Teuchos::ParameterList rolParameters(const OptimizationSettings& s) {
   status.set("Step Tolerance", s.stepTolerance);
   status.set("Iteration Limit", s.iterationLimit);
   return list;
+}
+
+/// What the measurements resolve (docs/optimization.md §3): the eigen-decomposition of the
+/// Gauss–Newton Hessian AᵀA in the design scaled by its bounds (z_j = h_j / (upper_j − lower_j)).
+/// A direction v with eigenvalue λ is known to the standard error 1/√λ of the bounds' range; it is
+/// resolved when that is below 1 (the data pin it inside the range). Per parameter: the share of it
+/// that lies in unresolved directions (Σ_unresolved v_j²: 0 resolved, 1 not at all), and its
+/// standard error over the resolved directions only (physical units).
+nlohmann::json resolution(const std::vector<std::vector<double>>& A, const OptimizationSettings& settings) {
+  const int n = static_cast<int>(settings.design.size());
+  std::vector<double> range(n), H(n * n, 0.0), eigenvalues(n), work(std::max(1, 3 * n));
+  for (int j = 0; j < n; ++j) range[j] = settings.upper[j] - settings.lower[j];
+  for (const auto& row : A)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) H[i + n * j] += row[i] * range[i] * row[j] * range[j];
+  int info = 0;
+  Teuchos::LAPACK<int, double>().SYEV('V', 'U', n, H.data(), n, eigenvalues.data(), work.data(),
+                                      static_cast<int>(work.size()), &info);
+  nlohmann::json out;
+  if (info != 0) return out;
+  nlohmann::json directions = nlohmann::json::array();
+  std::vector<double> unresolved(n, 0.0), variance(n, 0.0);
+  int resolved = 0;
+  for (int k = 0; k < n; ++k) {
+    const double lambda = std::max(eigenvalues[k], 0.0);
+    const bool known = lambda > 1.0;  // 1/√λ < 1: a standard error below the bounds' range
+    resolved += known;
+    nlohmann::json v = nlohmann::json::object();
+    for (int j = 0; j < n; ++j) {
+      const double c = H[j + n * k];
+      v[settings.design[j]] = c;
+      if (known) variance[j] += c * c * range[j] * range[j] / lambda;
+      else unresolved[j] += c * c;
+    }
+    directions.push_back({{"eigenvalue", lambda},
+                          {"standard_error", lambda > 0.0 ? nlohmann::json(1.0 / std::sqrt(lambda)) : nlohmann::json(nullptr)},
+                          {"resolved", known},
+                          {"direction", v}});
+  }
+  out["directions"] = directions;
+  out["resolved_directions"] = resolved;
+  for (int j = 0; j < n; ++j) {
+    out["unresolved_share"][settings.design[j]] = unresolved[j];
+    out["resolved_standard_error"][settings.design[j]] = std::sqrt(variance[j]);
+  }
+  return out;
 }
 
 /// (AᵀA)⁻¹ by Cholesky (n small: the design's size); empty when AᵀA is not positive definite
@@ -248,6 +295,7 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
     }
     block["objective"] = J;
     const auto covariance = gaussNewtonCovariance(objective->residualJacobian(s), n);
+    block["resolution"] = resolution(objective->residualJacobian(s), settings);
     block["identifiable"] = !covariance.empty();
     if (covariance.empty()) block["covariance"] = nullptr;
     for (std::size_t i = 0; i < covariance.size(); ++i) {

@@ -2,7 +2,7 @@
 # "Friction fields"): the adjoint equal to the direct differentiation to round-off on scenes with
 # responses of every kind; a friction field's derivatives against finite differences and against
 # the uniform ν (adjoint_checks.py; tolerances justified there).
-foreach(sub agree field)
+foreach(sub agree field identify)
   add_test(NAME adjoint_${sub}
            COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/adjoint_checks.py ${sub}
                    $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/adjoint/${sub})
