@@ -103,3 +103,13 @@ flowform_parallel_equals_serial(hot_extrusion hot_extrusion.xml)
 # shape derivative's partials that sensitivity_shape checks serially.
 flowform_parallel_equals_serial(drawing drawing.xml --tol-shape 3e-5 --set "Sensitivity/Parameters={Friction Coefficient}")
 flowform_parallel_equals_serial(drawing_identify_friction drawing_identify_friction.xml --tol-shape 3e-5)
+# The adjoint on 2 ranks: each rank's response gradient by its own dofs (ghosts exported with ADD to
+# their owners), the reactions' part by J_uncᵀ, the transposed solve distributed; inside the
+# optimizer with a friction field (the same solves and designs either way).
+flowform_parallel_equals_serial(extrusion_identify_friction_field extrusion_identify_friction_field.xml)
+flowform_parallel_equals_serial(adjoint_extrusion extrusion.xml --set "Adaptivity/Enabled=false"
+                                --set "Sensitivity/Method=Adjoint"
+                                --set "Sensitivity/Parameters={Friction Coefficient:container, Yield Stress}"
+                                --set "Responses/plastic_power/Type=Plastic Power"
+                                --set "Responses/exit_speed/Type=Point Value" --set "Responses/exit_speed/Field=Velocity X"
+                                --set "Responses/exit_speed/X=1.2" --set "Responses/exit_speed/Y=0.05")
