@@ -59,9 +59,9 @@ def main():
                 result[method] = (statistics.median(seconds), statistics.median(totals), last)
             d, a = result["Direct"][2]["sensitivities"], result["Adjoint"][2]["sensitivities"]
             worst = max(abs(a[r][q] - d[r][q]) / max(abs(v) for v in d[r].values()) for r in d for q in d[r])
-            rows.append([f"({h}, {hc})", result["Direct"][2]["dofs"], n,
-                         f"{result['Direct'][0]:.3f}", result["Direct"][2]["sensitivity"]["solves"],
-                         f"{result['Adjoint'][0]:.3f}", result["Adjoint"][2]["sensitivity"]["solves"],
+            rows.append([f"({h}, {hc})", str(result["Direct"][2]["dofs"]), str(n),
+                         f"{result['Direct'][0]:.3f}", str(result["Direct"][2]["sensitivity"]["solves"]),
+                         f"{result['Adjoint'][0]:.3f}", str(result["Adjoint"][2]["sensitivity"]["solves"]),
                          f"{result['Direct'][0] / result['Adjoint'][0]:.1f}",
                          f"{result['Direct'][1]:.2f} / {result['Adjoint'][1]:.2f}", f"{worst:.1e}"])
             print(rows[-1], flush=True)
