@@ -326,8 +326,7 @@ void ContactWall::checkTangency(const std::string& group) const {
 }
 
 std::array<double, 2> ContactWall::stationPoint(int station) const {
-  const double length = m_curve.arcLength.back() + (m_curve.closed ? m_curve.segmentLength.back() : 0.0);
-  const double s = length * station / (numFieldStations() - 1);
+  const double s = length() * station / (numFieldStations() - 1);
   size_t k = 0;
   while (k + 2 < m_curve.arcLength.size() && m_curve.arcLength[k + 1] < s) ++k;
   const size_t o = (k + 1) % m_toolCoords.size();
@@ -346,11 +345,11 @@ void ContactWall::refreshGeometry(const Mesh& mesh) {
   if (hasFrictionField()) {
     // Node k at s_k/L of the wall: between stations floor(N s_k/L) and the next.
     const int intervals = numFieldStations() - 1;
-    const double length = m_curve.arcLength.back() + (m_curve.closed ? m_curve.segmentLength.back() : 0.0);
+    const double L = length();
     m_fieldStation.resize(m_curve.nodes.size());
     m_fieldFraction.resize(m_curve.nodes.size());
     for (size_t k = 0; k < m_curve.nodes.size(); ++k) {
-      const double t = intervals * m_curve.arcLength[k] / length;
+      const double t = intervals * m_curve.arcLength[k] / L;
       m_fieldStation[k] = std::min(static_cast<int>(std::floor(t)), intervals - 1);
       m_fieldFraction[k] = t - m_fieldStation[k];
     }

@@ -294,8 +294,9 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
                                                  {"residual", r[i]}};
     }
     block["objective"] = J;
-    const auto covariance = gaussNewtonCovariance(objective->residualJacobian(s), n);
-    block["resolution"] = resolution(objective->residualJacobian(s), settings);
+    const auto A = objective->residualJacobian(s);
+    const auto covariance = gaussNewtonCovariance(A, n);
+    block["resolution"] = resolution(A, settings);
     block["identifiable"] = !covariance.empty();
     if (covariance.empty()) block["covariance"] = nullptr;
     for (std::size_t i = 0; i < covariance.size(); ++i) {

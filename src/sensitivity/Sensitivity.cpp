@@ -4,7 +4,6 @@
 #include <cmath>
 #include <set>
 
-#include <Teuchos_SerialDenseMatrix.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <nlohmann/json.hpp>
@@ -263,15 +262,14 @@ void Sensitivity::computeByAdjoint(FlowModel& model, const Vector& x, const Resp
                                    const DofMap& dofMap, const std::vector<ContactWall>& walls,
                                    const std::map<std::string, MeshPartials>& partials) {
   // K_tᵀ λ_φ = (∂φ/∂q)ᵀ: one MultiVector, one transposed back-substitution per response.
-  m_adjointNames = m_responseNames;
-  const size_t numResponses = m_adjointNames.size(), numParameters = m_parameters.size();
+  const size_t numResponses = m_responseNames.size(), numParameters = m_parameters.size();
   m_responseDerivatives.clear();
   m_rhsNorms.assign(numParameters, 0.0);
   m_solutionNorms.clear();
   m_finite = true;
   if (numResponses > 0) {
     MultiVector gradient(x.getMap(), numResponses), lambda(x.getMap(), numResponses);
-    responses.gradients(x, m_adjointNames, mesh, dofMap, model.assembler(), walls, gradient);
+    responses.gradients(x, m_responseNames, mesh, dofMap, model.assembler(), walls, gradient);
     model.solveTranspose(gradient, lambda);
     m_solutionNorms.assign(numResponses, 0.0);
     lambda.norm2(Teuchos::ArrayView<double>(m_solutionNorms));
@@ -284,19 +282,15 @@ void Sensitivity::computeByAdjoint(FlowModel& model, const Vector& x, const Resp
     MultiVector loads(x.getMap(), numParameters);
     assembleParameterLoads(model, x, partials, loads);
     loads.norm2(Teuchos::ArrayView<double>(m_rhsNorms));
-    Teuchos::SerialDenseMatrix<int, double> products(static_cast<int>(numResponses), static_cast<int>(numParameters));
-    for (size_t i = 0; i < numResponses; ++i)
-      for (size_t j = 0; j < numParameters; ++j)
-        products(static_cast<int>(i), static_cast<int>(j)) = lambda.getVector(i)->dot(*loads.getVector(j));
     for (size_t j = 0; j < numParameters; ++j) {
       const SensitivityParameter& h = m_parameters[j];
       const auto given = partials.find(h.name);
       const std::map<std::string, double> explicitPart = responses.partials(x, h, mesh, dofMap, model.assembler(), walls);
       log() << "sensitivity: " << h.name << ": |dR/dh| = " << m_rhsNorms[j] << " (adjoint)\n";
       for (size_t i = 0; i < numResponses; ++i) {
-        const std::string& name = m_adjointNames[i];
+        const std::string& name = m_responseNames[i];
         const double value = explicitPart.at(name) + (given != partials.end() ? given->second.dPhidh.at(name) : 0.0) +
-                             products(static_cast<int>(i), static_cast<int>(j));
+                             lambda.getVector(i)->dot(*loads.getVector(j));
         m_responseDerivatives[name][h.name] = value;
         log() << "sensitivity:   d" << name << "/dh = " << value << "\n";
       }
@@ -337,8 +331,8 @@ void Sensitivity::report(nlohmann::json& summary) const {
                             {"finite", m_finite}};
   if (m_adjoint) {
     nlohmann::json adjoints = nlohmann::json::object();
-    for (size_t i = 0; i < m_adjointNames.size() && i < m_solutionNorms.size(); ++i)
-      adjoints[m_adjointNames[i]] = m_solutionNorms[i];
+    for (size_t i = 0; i < m_responseNames.size() && i < m_solutionNorms.size(); ++i)
+      adjoints[m_responseNames[i]] = m_solutionNorms[i];
     summary["sensitivity"]["adjoint_norms"] = adjoints;
   }
   if (m_inflow)

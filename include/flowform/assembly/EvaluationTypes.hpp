@@ -101,7 +101,7 @@ FrictionParameters<PScalar> frictionFor(const ContactWall& wall, int w, const Se
       return seeded && h->kind == kind ? PScalar(1, 0, value) : PScalar(value);
     };
     FrictionParameters<PScalar> out{seed(fp.frictionCoefficient, ParameterKind::FrictionCoefficient),
-                                        seed(fp.shearFactor, ParameterKind::ShearFactor)};
+                                    seed(fp.shearFactor, ParameterKind::ShearFactor)};
     if (seeded && h->kind == ParameterKind::FrictionField) out.seededStation = h->station;
     return out;
   }

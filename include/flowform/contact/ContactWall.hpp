@@ -245,6 +245,10 @@ class ContactWall {
     for (double v : m_settings.frictionField) nu = std::max(nu, v);
     return nu;
   }
+  /// The wall's length (as the curve is now).
+  double length() const {
+    return m_curve.arcLength.back() + (m_curve.closed ? m_curve.segmentLength.back() : 0.0);
+  }
   /// Where station j lies (on the wall as made).
   std::array<double, 2> stationPoint(int station) const;
   /// ν at node k: the field's (with its derivative by the seeded station, fp.seededStation), or fp's ν.
@@ -509,14 +513,9 @@ Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp
     const Scalar normalForce = m_settings.normalPenalty * m_viscosity[k] * weight(k) * un;
     d.pressureIntegral = normalForce > 0.0 ? normalForce : Scalar(0.0);
   }
-  if (hasFrictionField()) {
-    FrictionParameters<PScalar> local = fp;
-    local.frictionCoefficient = nodeFrictionCoefficient(k, fp);
-    const FrictionForce<Scalar> f = frictionForce(m_settings.law, d, local, m_settings.friction);
-    if (branch) *branch = f.branch;
-    return f.g;
-  }
-  const FrictionForce<Scalar> f = frictionForce(m_settings.law, d, fp, m_settings.friction);
+  FrictionParameters<PScalar> atNode = fp;  // ν of a Friction Field at node k
+  atNode.frictionCoefficient = nodeFrictionCoefficient(k, fp);
+  const FrictionForce<Scalar> f = frictionForce(m_settings.law, d, atNode, m_settings.friction);
   if (branch) *branch = f.branch;
   return f.g;
 }

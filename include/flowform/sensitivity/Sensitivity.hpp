@@ -119,10 +119,9 @@ class Sensitivity {
   bool m_adjoint = false;
   bool m_computed = false;
   std::map<std::string, std::map<std::string, double>> m_totalShape;
-  /// The responses to differentiate (Responses; all the differentiable ones by default).
+  /// The responses to differentiate (Responses; all the differentiable ones by default); with
+  /// Method = Adjoint, one adjoint λ_φ each.
   std::vector<std::string> m_responseNames;
-  /// Method = Adjoint: the responses whose adjoints λ_φ were solved (one column each).
-  std::vector<std::string> m_adjointNames;
 
   Teuchos::RCP<MultiVector> m_dqdh;
   std::map<std::string, std::map<std::string, double>> m_responseDerivatives;
