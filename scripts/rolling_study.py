@@ -1,5 +1,6 @@
 """The rolling scene against the slab method (docs/rolling.md §7, docs/rolling_theory.md): runs
-xml/rolling.xml over sets of passes, compares each run with the slab method (Coulomb, on the
+xml/rolling_flat.xml (the strip's surfaces flat; --case xml/rolling.xml runs the shipped case, both
+strip surfaces free) over sets of passes, compares each run with the slab method (Coulomb, on the
 exact arc, rolling_theory.py) at the same R, h0, h1, ν and the model's material, prints a table of
 the relative differences and the trends, and draws the classical pictures.
 
@@ -15,7 +16,7 @@ Parts (--parts, default all but mesh):
 Each pass runs once per Coulomb normal force of --normal-force (docs/contact.md "What Coulomb
 multiplies"):
   "Contact Force"  τ = ν σ_n, the normal traction: the slab method's Coulomb law (default here)
-  "Pressure"       τ = ν p, the mean pressure: the scene's default (xml/rolling.xml), a friction
+  "Pressure"       τ = ν p, the mean pressure (the paper's law), a friction
                    about 0.6 ν in the slab's sense (docs/rolling.md §7)
   both             the two.
 
@@ -116,7 +117,7 @@ def run_all(a, plist):
         d = p.directory(a.out)
         if hasattr(p, "shared") or (a.reuse and rolling_compare.run_dir_ok(d)) or a.plots_only:
             continue
-        r, bilateral = rolling_compare.run_pass(a.flowform, repo_path("xml", "rolling.xml"), d,
+        r, bilateral = rolling_compare.run_pass(a.flowform, repo_path(*a.case.split("/")), d,
                                                 BASE + p.sets() + a.sets, timeout=a.timeout)
         print(f"  {VARIANTS[p.variant]}/{p.name}: exit {r.status}, {r.wall:.1f} s"
               + (" (statuses cycled: bilateral roll)" if bilateral else ""), flush=True)
@@ -298,6 +299,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("flowform", nargs="?", default=default_flowform())
     ap.add_argument("--out", default="out/rolling_study")
+    ap.add_argument("--case", default="xml/rolling_flat.xml", help="the case, relative to the repository")
     ap.add_argument("--parts", default="nu,R,reduction,sticking")
     ap.add_argument("--normal-force", default="Contact Force", choices=["Contact Force", "Pressure", "both"])
     ap.add_argument("--nu", type=sweep.parse_values, default=[0.2, 0.25, 0.3, 0.4, 0.5])

@@ -37,8 +37,9 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
   }
   std::vector<std::array<double, 2>> zero(base.numNodes(), {0.0, 0.0});
   HarmonicExtension extension(base, m_step.prescribed);
-  // The mesh with unknown j moved by `amount` along its direction (and the group its surface drags).
-  auto moveUnknown = [&](int j, double amount) {
+  // The boundary displacement of unknown j moved by `amount` along its direction (and the group
+  // its surface drags).
+  auto displacementOf = [&](int j, double amount) {
     std::vector<std::array<double, 2>> d = zero;
     const auto& dir = m_unknowns[j].direction;
     d[m_step.moves[m_unknowns[j].move].node] = {amount * dir[0], amount * dir[1]};
@@ -47,7 +48,37 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
         const auto& along = drag.slide.on ? drag.slide.tangent : dir;
         d[drag.node] = {drag.fraction * amount * along[0], drag.fraction * amount * along[1]};
       }
-    at.moveNodes(extension.positions(d));
+    return d;
+  };
+  // The velocity that moves with a moving tool's nodes: a node of a moving wall displaced by d_k
+  // takes the tool's velocity change there, v_w(x_k + d_k) − v_w(x_k) (ω e_z × d_k for a roll),
+  // so that its velocity relative to the tool is held. The differences in the positions are then
+  // taken along (X + εV, q + εQ) and Y' = −K_t⁻¹ d/dε R(q + εQ, X + εV) is dq/db − Q: the same
+  // total derivatives, but without the penalty's stiff response to a wall node slid under a held
+  // velocity (the normal penalty sees (u − v_w)·n change by ω d_k; near the neutral point, where
+  // the metal turns with the roll and the viscosity is large, that response is ~10⁵ per unit move
+  // and cancels against the flow's to a few units: a cancellation the differences' round-off
+  // did not survive on fine meshes).
+  auto toolFollowingShift = [&](const std::vector<std::array<double, 2>>& d, double amount) {
+    auto Q = Teuchos::rcp(new Vector(q.getMap()));
+    if (!(amount > 0.0)) return Q;
+    auto values = Q->getDataNonConst();
+    const auto& map = *q.getMap();
+    for (const ContactWall& wall : at.walls) {
+      if (!wall.motion().moving()) continue;
+      for (GO node : wall.curve().nodes) {
+        const auto& dk = d[node];
+        if (dk[0] == 0.0 && dk[1] == 0.0) continue;
+        const auto& x = base.coords[node];
+        const auto v0 = wall.motion().velocityAt(x);
+        const auto v1 = wall.motion().velocityAt({x[0] + dk[0], x[1] + dk[1]});
+        for (int c = 0; c < 2; ++c) {
+          const LO lid = map.getLocalElement(dofMap.globalDof(node, c));
+          if (lid != Teuchos::OrdinalTraits<LO>::invalid()) values[lid] = (v1[c] - v0[c]) / amount;
+        }
+      }
+    }
+    return Q;
   };
 
   // Pass 1, the positions: ∂R/∂b_j (with the interior following), ∂U/∂b_j, ∂φ/∂b_j.
@@ -65,23 +96,28 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
   try {
     // One assembly per move: the unconstrained residual gives the responses' reactions and the
     // inflow's force, then R by constraining it.
-    auto evaluateMoved = [&](Vector& r, double& force, std::map<std::string, double>& phi) {
-      at.model.assembler().residual(q, r, false);
+    auto evaluateMoved = [&](const Vector& x, Vector& r, double& force, std::map<std::string, double>& phi) {
+      at.model.assembler().residual(x, r, false);
       if (inflow) force = at.inflowForce(r);
-      if (responses) phi = responsesAt(q, &r);
-      at.model.assembler().constrainResidual(q, r);
+      if (responses) phi = responsesAt(x, &r);
+      at.model.assembler().constrainResidual(x, r);
     };
     for (int j = 0; j < nb; ++j) {
       const bool slidesWall = m_step.moves[m_unknowns[j].move].slide.on;  // the attachment: a wall node
       const double eps = (slidesWall ? 1e-9 : 1e-6) * at.surfaces.lengthScale();
       double forcePlus = 0.0, forceMinus = 0.0;
       std::map<std::string, double> phiPlus, phiMinus;
-      moveUnknown(j, eps);
-      evaluateMoved(rPlus, forcePlus, phiPlus);
-      const std::vector<double> uPlus = updateAt(q);
-      moveUnknown(j, -eps);
-      evaluateMoved(rMinus, forceMinus, phiMinus);
-      const std::vector<double> uMinus = updateAt(q);
+      const auto d = displacementOf(j, eps);
+      const auto Q = toolFollowingShift(d, eps);  // per unit b_j
+      Vector qMoved(q, Teuchos::Copy);
+      qMoved.update(eps, *Q, 1.0);
+      at.moveNodes(extension.positions(d));
+      evaluateMoved(qMoved, rPlus, forcePlus, phiPlus);
+      const std::vector<double> uPlus = updateAt(qMoved);
+      qMoved.update(-2.0 * eps, *Q, 1.0);
+      at.moveNodes(extension.positions(displacementOf(j, -eps)));
+      evaluateMoved(qMoved, rMinus, forceMinus, phiMinus);
+      const std::vector<double> uMinus = updateAt(qMoved);
       dFdb[j] = (forcePlus - forceMinus) / (2 * eps);
       rx.getVectorNonConst(j)->update(-1.0 / (2 * eps), rPlus, 1.0 / (2 * eps), rMinus, 0.0);  // −∂R/∂b_j
       for (int i = 0; i < nb; ++i) m_G(i, j) = (uPlus[i] - uMinus[i]) / (2 * eps);
@@ -94,7 +130,8 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
   }
   at.moveNodes(base.coords);
 
-  // Y = −K_t⁻¹ ∂R/∂b with the factors at the state; then U_q Y_j (and φ_q Y_j).
+  // Y = −K_t⁻¹ ∂R/∂b with the factors at the state (Y' of the tool-following differences); then
+  // U_q Y_j (and φ_q Y_j).
   FlowModel& model = at.model;
   model.restartLinearization();
   model.computeJacobian(q);

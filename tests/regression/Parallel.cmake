@@ -85,7 +85,17 @@ flowform_parallel_equals_serial(cutting_free_chip cutting.xml --tol 1e-7 --set "
                                 --set "Boundary Conditions/chip_outlet/Release After Free Surfaces=true")
 # Rolling: the Rigid Inflow's balance (its force sums reduced over the ranks, ~10 re-solves) and the
 # Neutral Angle's per-node slip gathered from the owners, with the bordered DDM.
-flowform_parallel_equals_serial(rolling rolling.xml --set "Error Estimation/Method=None")
+flowform_parallel_equals_serial(rolling rolling_flat.xml --set "Error Estimation/Method=None")
+# The shipped rolling case: both strip surfaces free, the entry one sliding the roll's nodes, the
+# total derivatives by ν through them and U (dφ/dR, dφ/dh1 left out: their mesh partials are
+# differences over node moves of 10⁻⁹ of the mesh, whose round-off depends on the ranks' summation
+# order, 10⁻⁶–10⁻³ apart between 1 and 2 ranks). Fields agree to ≤ 3e-10 (measured, dp/dν the
+# largest; default --tol 1e-9). The total derivatives: 10⁻⁸–7.5·10⁻⁷ apart for the forces, powers and
+# the neutral angle, 2–4·10⁻⁶ for the fluxes through the roll and the strip surfaces (10⁻⁶–10⁻⁴ of the
+# throughput: cancellations), hence --tol-shape 1e-5; inlet_power (U × the inflow's imbalance, zero to
+# the balance's tolerance) has round-off for derivatives and is left out.
+flowform_parallel_equals_serial(rolling_free rolling.xml --tol-shape 1e-5 --ignore inlet_power
+                                --set "Error Estimation/Method=None" --set "Sensitivity/Parameters={Friction Coefficient}")
 # The Temperature field on 2 ranks: its rows, the prescribed temperatures (owned nodes only) and
 # the Heat Flow reactions summed over the ranks.
 flowform_parallel_equals_serial(thermal_channel thermal_channel.xml)

@@ -1,5 +1,5 @@
 """The rolling scene against the slab method (docs/rolling.md §7, docs/rolling_theory.md):
-xml/rolling.xml with Coulomb on the contact force (τ = ν σ_n, the slab's law), on the coarse mesh
+xml/rolling_flat.xml (the strip's surfaces flat) with Coulomb on the contact force (τ = ν σ_n, the slab's law), on the coarse mesh
 h = 0.1, hc = 0.04 (≈ 1240 dofs), compared with rolling_theory.solve (Coulomb, exact arc, σ̄ at the
 mean strain rate) at the run's own pass through flowform_tools.rolling_compare.
 
@@ -83,7 +83,7 @@ PEAK_SEGMENTS = 2        # the peak's allowance in wall segments (check 3)
 
 def run(flowform, source, outdir, R=10.0, h1=0.75, nu=0.3):
     d = os.path.join(outdir, f"R{R:g}_h1_{h1:g}_nu{nu:g}")
-    r, bilateral = rolling_compare.run_pass(flowform, os.path.join(source, "xml/rolling.xml"), d,
+    r, bilateral = rolling_compare.run_pass(flowform, os.path.join(source, "xml/rolling_flat.xml"), d,
                                             COARSE + rolling_compare.pass_sets(R=R, h1=h1, nu=nu))
     if bilateral:
         print(f"R = {R:g}, h1 = {h1:g}, ν = {nu:g}: the statuses cycled; solved with the roll bilateral")

@@ -1,7 +1,9 @@
 """Stress battery of the nonlinear solve: cases at the edges of the parameter ranges a user
 may set, each of which must converge (exit 0, converged: true) and give finite responses.
 Each case is one line of CASES: a name, the case file and its --set overrides. A group
-(`channel`, `extrusion`, `rolling`, `grid` — the last under the slow label) is one ctest test (tests/regression/Stress.cmake).
+(`channel`, `extrusion`, `rolling` (xml/rolling_flat.xml), `rolling_free` (xml/rolling.xml as
+shipped, free strip surfaces), `grid` — the last two under the slow label) is one ctest test
+(tests/regression/Stress.cmake).
 
     stress_checks.py GROUP FLOWFORM SOURCE_DIR OUT_DIR
 
@@ -35,14 +37,25 @@ def extrusion(name, source, *sets, walls_set=None):
     return (name, EX, COARSE + list(sets) + extra)
 
 
-RO = "xml/rolling.xml"
-
-
-def rolling(name, *sets, R=10.0, h1=0.75):
-    """xml/rolling.xml without its estimate and sensitivities, the inflow started at ωR h1/h0."""
-    return (name, RO, ["Error Estimation/Method=None", "Sensitivity/Parameters={}",
+def rolling(name, *sets, R=10.0, h1=0.75, case="xml/rolling_flat.xml"):
+    """A rolling case without its estimate and sensitivities, the inflow started at ωR h1/h0."""
+    return (name, case, ["Error Estimation/Method=None", "Sensitivity/Parameters={}",
                        f"Mesh/Geo Parameters/R={R!r}", f"Mesh/Geo Parameters/h1={h1!r}",
                        f"Boundary Conditions/inlet/Velocity X={R * h1!r}"] + list(sets))
+
+
+def rolling_battery(case):
+    """docs/rolling.md §9: ν 0.1, 0.5, 2; reductions 5 %, 40 %; R/h0 5, 20, 50; back and front tension."""
+    return [rolling("nu_0.1", "Boundary Conditions/roll/Friction Coefficient=0.1", case=case),
+            rolling("nu_0.5", "Boundary Conditions/roll/Friction Coefficient=0.5", case=case),
+            rolling("reduction_5", h1=0.95, case=case),
+            rolling("reduction_40", h1=0.6, case=case),
+            rolling("R_5", R=5.0, case=case),
+            rolling("R_20", R=20.0, case=case),
+            rolling("R_50", R=50.0, case=case),
+            rolling("nu_2_sticking", "Boundary Conditions/roll/Friction Coefficient=2.0", case=case),
+            rolling("back_tension_0.2", "Boundary Conditions/inlet/Traction X=-0.2", case=case),
+            rolling("front_tension_0.3", "Boundary Conditions/outlet/Traction X=0.3", case=case)]
 
 
 def groups(source):
@@ -83,16 +96,8 @@ def groups(source):
         ],
         # Rolling (docs/rolling.md §9): ν from just above the steady limit (0.085–0.09) to 0.5 and
         # the sticking limit 2, reductions 5–40 %, R/h0 5, 20, 50, back and front tension.
-        "rolling": [rolling("nu_0.1", "Boundary Conditions/roll/Friction Coefficient=0.1"),
-                    rolling("nu_0.5", "Boundary Conditions/roll/Friction Coefficient=0.5"),
-                    rolling("reduction_5", h1=0.95),
-                    rolling("reduction_40", h1=0.6),
-                    rolling("R_5", R=5.0),
-                    rolling("R_20", R=20.0),
-                    rolling("R_50", R=50.0),
-                    rolling("nu_2_sticking", "Boundary Conditions/roll/Friction Coefficient=2.0"),
-                    rolling("back_tension_0.2", "Boundary Conditions/inlet/Traction X=-0.2"),
-                    rolling("front_tension_0.3", "Boundary Conditions/outlet/Traction X=0.3")],
+        "rolling": rolling_battery("xml/rolling_flat.xml"),
+        "rolling_free": rolling_battery("xml/rolling.xml"),
         # The grids of issue #10 (slow label): the channel over γ × e0 × n, the extrusion over
         # ν × κ_t, plane and axisymmetric.
         "grid": [channel(f"channel_gamma_{g}_e0_{e}_n_{n}", f"Material/Rate Constant={g}",

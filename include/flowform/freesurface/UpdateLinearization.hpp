@@ -6,7 +6,10 @@
 // ∂R/∂X E, ∂U/∂b (and ∂φ/∂b for the responses) are central differences in the node positions:
 // each unknown moved by ±10⁻⁶ × the surface length (±10⁻⁹ for an attachment point, which slides a
 // contact wall's nodes), the interior following by the harmonic extension E (factored once);
-// with a Rigid Inflow in the state, its speed follows the unknowns (Y_j += dU_j g). U_q and φ_q
+// with a Rigid Inflow in the state, its speed follows the unknowns (Y_j += dU_j g). A moving
+// tool's nodes slid by an attachment point carry the tool's velocity with them (the differences
+// are taken at q + εQ, Q the tool's velocity change at the moved nodes, and Y is dq/db − Q, which
+// leaves every total derivative unchanged and avoids the penalty's stiff response). U_q and φ_q
 // along a direction are central differences in q. The flow part uses the factors of K_t at the
 // state (one back-substitution per unknown); contact statuses and penalty scales are held. Used
 // by the total shape derivative (ShapeDerivative) and by the Newton step on the positions of the
