@@ -1,6 +1,7 @@
 """The rolling scene's cost and estimated errors (issue #27's benchmark; docs/BENCHMARKS.md
 "Rolling: run time and estimated errors"): xml/rolling.xml as shipped (R = 10, h0 = 1, h1 = 0.75,
-ν = 0.2, Coulomb on the mean pressure, the DDM derivative by ν and the Two-Level estimate) on the
+ν = 0.2, Coulomb on the contact force, both strip surfaces free, the DDM derivatives by ν, R and h1
+through them and the Two-Level estimate; --case xml/rolling_flat.xml: the flat surfaces) on the
 default mesh and refinements of it, h = 0.05 → 0.035 → 0.025 with hc = h/2.5. Per mesh: dofs, wall
 nodes, the run time (summary.json timings.total, and the error estimate's share), the Newton
 iterations, the Rigid Inflow's balance re-solves, and for roll_force, roll_torque, neutral_angle,
@@ -9,7 +10,7 @@ computed) and the distance to the Richardson extrapolation of the three meshes (
 clamped to [0.5, 2], flagged when the values do not converge monotonically).
 
 usage: scripts/python bench/rolling_bench.py [FLOWFORM] [--h 0.05,0.035,0.025] [--estimate-first]
-                                             [--workdir DIR] [--sets P=V ...]
+                                             [--case xml/rolling.xml] [--workdir DIR] [--sets P=V ...]
 
 The estimate runs on every mesh; --estimate-first keeps it on the first mesh only (the refined
 meshes then run about 3 times faster). The machine is shared: the load average
@@ -33,6 +34,7 @@ def main():
     ap.add_argument("--h", type=sweep.parse_values, default=[0.05, 0.035, 0.025])
     ap.add_argument("--estimate-first", action="store_true")
     ap.add_argument("--workdir", default="/tmp/flowform_rolling_bench")
+    ap.add_argument("--case", default="xml/rolling.xml", help="the case, relative to the repository")
     ap.add_argument("--sets", nargs="*", default=[])
     a = ap.parse_args()
     flowform = launcher.require_executable(a.flowform, "rolling_bench.py")
@@ -44,7 +46,7 @@ def main():
         if a.estimate_first and i > 0:
             sets.append("Error Estimation/Method=None")
         before = machine.load()
-        r = launcher.run(flowform, repo_path("xml", "rolling.xml"), os.path.join(a.workdir, f"h{h:g}"), sets + a.sets,
+        r = launcher.run(flowform, repo_path(*a.case.split("/")), os.path.join(a.workdir, f"h{h:g}"), sets + a.sets,
                          quiet=True, capture=True, clean=True)
         s = r.summary or {}
         t = s.get("timings") or {}
