@@ -6,6 +6,7 @@
 
 #include <Teuchos_SerialDenseSolver.hpp>
 
+#include "flowform/contact/ToolVelocities.hpp"
 #include "flowform/discretization/SolutionTransfer.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
 
@@ -50,35 +51,18 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
       }
     return d;
   };
-  // The velocity that moves with a moving tool's nodes: a node of a moving wall displaced by d_k
-  // takes the tool's velocity change there, v_w(x_k + d_k) − v_w(x_k) (ω e_z × d_k for a roll),
-  // so that its velocity relative to the tool is held. The differences in the positions are then
-  // taken along (X + εV, q + εQ) and Y' = −K_t⁻¹ d/dε R(q + εQ, X + εV) is dq/db − Q: the same
-  // total derivatives, but without the penalty's stiff response to a wall node slid under a held
-  // velocity (the normal penalty sees (u − v_w)·n change by ω d_k; near the neutral point, where
-  // the metal turns with the roll and the viscosity is large, that response is ~10⁵ per unit move
-  // and cancels against the flow's to a few units: a cancellation the differences' round-off
-  // did not survive on fine meshes).
-  auto toolFollowingShift = [&](const std::vector<std::array<double, 2>>& d, double amount) {
-    auto Q = Teuchos::rcp(new Vector(q.getMap()));
-    if (!(amount > 0.0)) return Q;
-    auto values = Q->getDataNonConst();
-    const auto& map = *q.getMap();
-    for (const ContactWall& wall : at.walls) {
-      if (!wall.motion().moving()) continue;
-      for (GO node : wall.curve().nodes) {
-        const auto& dk = d[node];
-        if (dk[0] == 0.0 && dk[1] == 0.0) continue;
-        const auto& x = base.coords[node];
-        const auto v0 = wall.motion().velocityAt(x);
-        const auto v1 = wall.motion().velocityAt({x[0] + dk[0], x[1] + dk[1]});
-        for (int c = 0; c < 2; ++c) {
-          const LO lid = map.getLocalElement(dofMap.globalDof(node, c));
-          if (lid != Teuchos::OrdinalTraits<LO>::invalid()) values[lid] = (v1[c] - v0[c]) / amount;
-        }
-      }
-    }
-    return Q;
+  // A moving tool's nodes slid by an attachment point carry the tool's velocity with them
+  // (contact/ToolVelocities.hpp): the differences are taken at q + v_w(X ± εE_j) − v_w(X), and Y_j
+  // below is then dq/db_j less that shift per unit b_j, which leaves G and dφ/db_j as they are. With
+  // the velocity held, the normal penalty sees (u − v_w)·n change by ω d_k and answers with ~10⁵
+  // per unit move near a roll's neutral point (the metal turns with the roll there, at a large
+  // viscosity), to be cancelled by the flow's response to a few units: a cancellation the
+  // differences' round-off did not survive on fine meshes.
+  const Teuchos::RCP<const Vector> toolsAtState = toolVelocities(at.walls, dofMap, q.getMap());
+  auto followingTools = [&](Vector& x) {
+    x.assign(q);
+    if (toolsAtState.is_null()) return;
+    x.update(1.0, *toolVelocities(at.walls, dofMap, q.getMap()), -1.0, *toolsAtState, 1.0);
   };
 
   // Pass 1, the positions: ∂R/∂b_j (with the interior following), ∂U/∂b_j, ∂φ/∂b_j.
@@ -90,7 +74,7 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
   m_G.shape(nb, nb);
   m_phiB.assign(responses ? nb : 0, {});
   m_phiQ.assign(responses ? nb : 0, {});
-  Vector rPlus(q.getMap()), rMinus(q.getMap());
+  Vector rPlus(q.getMap()), rMinus(q.getMap()), qMoved(q.getMap());
   const bool inflow = static_cast<bool>(at.inflowForce);
   std::vector<double> dFdb(nb, 0.0);  // a Rigid Inflow's ∂F/∂b_j
   try {
@@ -107,15 +91,12 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
       const double eps = (slidesWall ? 1e-9 : 1e-6) * at.surfaces.lengthScale();
       double forcePlus = 0.0, forceMinus = 0.0;
       std::map<std::string, double> phiPlus, phiMinus;
-      const auto d = displacementOf(j, eps);
-      const auto Q = toolFollowingShift(d, eps);  // per unit b_j
-      Vector qMoved(q, Teuchos::Copy);
-      qMoved.update(eps, *Q, 1.0);
-      at.moveNodes(extension.positions(d));
+      at.moveNodes(extension.positions(displacementOf(j, eps)));
+      followingTools(qMoved);
       evaluateMoved(qMoved, rPlus, forcePlus, phiPlus);
       const std::vector<double> uPlus = updateAt(qMoved);
-      qMoved.update(-2.0 * eps, *Q, 1.0);
       at.moveNodes(extension.positions(displacementOf(j, -eps)));
+      followingTools(qMoved);
       evaluateMoved(qMoved, rMinus, forceMinus, phiMinus);
       const std::vector<double> uMinus = updateAt(qMoved);
       dFdb[j] = (forcePlus - forceMinus) / (2 * eps);

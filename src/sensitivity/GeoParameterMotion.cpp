@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flowform/contact/ToolVelocities.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
 #include "flowform/freesurface/MeshMotion.hpp"
@@ -116,22 +117,40 @@ MeshPartials meshPartials(Problem& problem, const Vector& state, const std::vect
   // Mixing moves (the residual at 10⁻⁸, the responses at 10⁻⁹, or each at the largest move that
   // agrees with a smaller one) made the rolling forces' derivatives 2–7 % wrong, for a reason not
   // traced (evaluations at several moves in sequence do not reproduce one move's alone).
+  //
+  // A moving tool's nodes keep their velocity relative to the tool (contact/ToolVelocities.hpp):
+  // the differences are taken at x + v_w(X ± εV) − v_w(X), and the flow's shift per unit h,
+  // velocityShift, is added back to dq/dh by the DDM.
   const double eps = kMeshPartialMove * std::hypot(hi[0] - lo[0], hi[1] - lo[1]) / largest;
   const bool inflow = !problem.boundaryConditions().rigidInflow().group.empty();
-  Vector plus(x.getMap()), minus(x.getMap());
+  const Teuchos::RCP<const Vector> toolsAtState = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
+  Vector plus(x.getMap()), minus(x.getMap()), xPlus(x, Teuchos::Copy), xMinus(x, Teuchos::Copy);
+  Teuchos::RCP<Vector> toolsPlus, toolsMinus;
   problem.moveNodes(movedAlong(problem, V, eps));
-  problem.assembler().residual(x, plus);
-  const auto phiPlus = problem.evaluateResponses(x);
-  const double forcePlus = inflow ? problem.rigidInflowForce(x) : 0.0;
+  if (!toolsAtState.is_null()) {
+    toolsPlus = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
+    xPlus.update(1.0, *toolsPlus, -1.0, *toolsAtState, 1.0);
+  }
+  problem.assembler().residual(xPlus, plus);
+  const auto phiPlus = problem.evaluateResponses(xPlus);
+  const double forcePlus = inflow ? problem.rigidInflowForce(xPlus) : 0.0;
   problem.moveNodes(base);
   problem.moveNodes(movedAlong(problem, V, -eps));
-  problem.assembler().residual(x, minus);
-  const auto phiMinus = problem.evaluateResponses(x);
-  const double forceMinus = inflow ? problem.rigidInflowForce(x) : 0.0;
+  if (!toolsAtState.is_null()) {
+    toolsMinus = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
+    xMinus.update(1.0, *toolsMinus, -1.0, *toolsAtState, 1.0);
+  }
+  problem.assembler().residual(xMinus, minus);
+  const auto phiMinus = problem.evaluateResponses(xMinus);
+  const double forceMinus = inflow ? problem.rigidInflowForce(xMinus) : 0.0;
   problem.moveNodes(base);
   out.dRdh->update(1.0 / (2 * eps), plus, -1.0 / (2 * eps), minus, 0.0);
   for (const auto& [name, value] : phiPlus) out.dPhidh[name] = (value - phiMinus.at(name)) / (2 * eps);
   out.dInflowForce = (forcePlus - forceMinus) / (2 * eps);
+  if (!toolsAtState.is_null()) {
+    out.velocityShift = Teuchos::rcp(new Vector(x.getMap()));
+    out.velocityShift->update(1.0 / (2 * eps), *toolsPlus, -1.0 / (2 * eps), *toolsMinus, 0.0);
+  }
   return out;
 }
 

@@ -237,6 +237,13 @@ void Sensitivity::compute(FlowModel& model, const Vector& x, const Responses& re
       log() << "sensitivity:   d" << name << "/dh = " << m_responseDerivatives[name][m_parameters[j].name] << "\n";
     }
   }
+  // A moving tool's partials were taken with the flow following it (GeoParameterMotion.hpp): the
+  // responses' derivatives above are complete with the solved part; dq/dh itself gets the shift.
+  for (size_t j = 0; j < numParameters && m_finite; ++j) {
+    const auto partials = meshPartials.find(m_parameters[j].name);
+    if (partials != meshPartials.end() && !partials->second.velocityShift.is_null())
+      m_dqdh->getVectorNonConst(j)->update(1.0, *partials->second.velocityShift, 1.0);
+  }
   m_computed = m_finite;
   if (!m_finite) {
     log() << "sensitivity: dq/dh is not finite (singular Jacobian?)\n";

@@ -66,8 +66,8 @@ shape (the shape parameters R and h1, "Geo Parameter:<name>", docs/sensitivity.m
   1. dφ/dR and dφ/dh1 by DDM (the mesh moved along V = dX/dh, the inflow speed through the bordered
      system) against the built-in central differences (the .geo meshed again at h ± 2e-4 h, the
      inflow balanced again): roll_force, roll_torque, inlet_flux, plastic_power to 1e-4 (measured
-     ≤ 4.2e-7), forward_slip to 1e-3 (measured 3.1e-7 for R, 3.6e-5 for h1: its dφ/dh1 is 10⁻³ of
-     its scale), neutral_angle to 2e-2 (measured 1.8e-4, 8.0e-5; as for ν).
+     ≤ 2.0e-6), forward_slip to 1e-3 (measured 1.4e-4 for R, 2.2e-4 for h1: its dφ/dR and dφ/dh1
+     are 10⁻⁵ and 10⁻³ of its scale), neutral_angle to 2e-2 (measured 1.6e-4, 5.1e-5; as for ν).
   2. Against independent re-meshed runs from scratch at R ± 0.5 and h1 ± 0.0125 (each meshed by
      gmsh anew, another triangulation): force, torque and the inlet flux within 3 % (measured
      0.1–2.1 %: a re-meshed run's own discretization noise over the step, plus the O(δ²) term).

@@ -16,7 +16,10 @@
 //     ∂R/∂h = ∂R/∂X V,      ∂φ/∂h = ∂φ/∂X V,
 // both central differences of the residual and the responses at X ± εV with q held (ε V at most
 // kMeshPartialMove of the mesh's size), whatever the mesh moves carries along: the wall normals, a rolling
-// wall's fitted centre, the symmetry directions, the Dirichlet rows' prescribed values.
+// wall's fitted centre, the symmetry directions, the Dirichlet rows' prescribed values. A moving
+// tool's nodes keep their velocity relative to the tool instead (q + Q_h ε at X + εV, Q_h the tool
+// velocities' change per unit h, contact/ToolVelocities.hpp): the partials are then along (V, Q_h)
+// and the DDM adds Q_h to the dq/dh it solves for, so dφ/dh is unchanged in exact arithmetic.
 #pragma once
 
 #include <array>
@@ -60,6 +63,9 @@ struct MeshPartials {
   std::map<std::string, double> dPhidh;  ///< ∂φ/∂h|_q of every response
   double dInflowForce = 0.0;             ///< ∂F/∂h|_q of a Rigid Inflow's balance (0 without)
   std::vector<std::array<double, 2>> motion;  ///< V, the mesh velocity they were made along
+  /// Q_h, the flow held relative to the moving tools along V (null without a moving tool): the
+  /// partials above are along (V, Q_h), dq/dh = Q_h − K_t⁻¹ ∂R/∂h (the DDM adds it).
+  Teuchos::RCP<Vector> velocityShift;
 };
 
 /// A problem's partials of a Geo Parameter at its converged flow x (V measured, then meshPartials),
