@@ -289,7 +289,8 @@ def speed_map(a, plist, tag):
             ax.set_ylim(*zoom[2:])
         fig.colorbar(im, ax=ax, label="|u|", shrink=0.8)
     axes[0].legend(fontsize=7, loc="lower left")
-    axes[0].set_title(f"|u|, {plist[0].name}, Coulomb on the {plist[0].variant.lower()}: the strip surfaces are flat and fixed",
+    surfaces = "free (streamlines)" if "flat" not in os.path.basename(a.case) else "flat and fixed"
+    axes[0].set_title(f"|u|, {plist[0].name}, Coulomb on the {plist[0].variant.lower()}: the strip surfaces {surfaces}",
                       fontsize=9)
     axes[1].set_title("near the bite", fontsize=9)
     plotting.save(fig, os.path.join(a.out, f"speed_{tag}.png"))
