@@ -131,6 +131,10 @@ bool RankEdges::contains(const std::array<GO, 2>& e) const {
 
 void BoundaryConditions::refreshGeometry(const Mesh& mesh) { build(mesh); }
 
+void BoundaryConditions::setToolShape(const Mesh& made) {
+  for (auto& [group, normal] : m_faceNormals) normal = buildBoundaryCurve(made, made.boundary(group)).segmentNormals.front();
+}
+
 void BoundaryConditions::setGroupValue(const Mesh& mesh, const std::string& group, const std::string& entry,
                                        double value) {
   m_bcList.sublist(group).set(entry, value);

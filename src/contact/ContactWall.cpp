@@ -376,6 +376,15 @@ void ContactWall::refreshGeometry(const Mesh& mesh) {
   }
 }
 
+void ContactWall::setTool(const Mesh& made) {
+  const BoundaryCurve tool = buildBoundaryCurve(made, made.boundary(m_curve.name));
+  if (tool.nodes != m_curve.nodes)
+    throw std::logic_error("contact wall '" + m_curve.name + "': the tool's mesh has other nodes than the wall");
+  m_toolCoords.clear();
+  for (GO node : tool.nodes) m_toolCoords.push_back(made.coords[node]);
+  m_toolNormals = tool.normals;
+}
+
 std::vector<std::array<GO, 2>> ContactWall::couplings() const {
   std::vector<std::array<GO, 2>> pairs;
   for (int k = 0; k < numNodes(); ++k)

@@ -182,6 +182,15 @@ void Problem::moveNodes(const std::vector<std::array<double, 2>>& coords) {
   m_model->invalidateJacobian();
 }
 
+void Problem::moveShape(const std::vector<std::array<double, 2>>& madeCoords,
+                        const std::vector<std::array<double, 2>>& coords) {
+  Mesh made = m_mesh;
+  made.coords = madeCoords;
+  for (ContactWall& wall : m_walls) wall.setTool(made);
+  m_bcs->setToolShape(made);
+  moveNodes(coords);
+}
+
 SurfaceLinearizationState Problem::linearizationState(bool withInflow) {
   SurfaceLinearizationState state{m_mesh,  *m_dofMap, m_physics.kernel.geometry, *m_freeSurfaces, m_walls, *m_model,
                                   *m_responses, *m_solution,

@@ -126,7 +126,14 @@ MeshPartials meshPartials(Problem& problem, const Vector& state, const std::vect
   const Teuchos::RCP<const Vector> toolsAtState = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
   Vector plus(x.getMap()), minus(x.getMap()), xPlus(x, Teuchos::Copy), xMinus(x, Teuchos::Copy);
   Teuchos::RCP<Vector> toolsPlus, toolsMinus;
-  problem.moveNodes(movedAlong(problem, V, eps));
+  // The tools move with the shape (Problem::moveShape): the mesh as made along V as well.
+  const std::vector<std::array<double, 2>> made = problem.meshAsMade().coords;
+  auto madeAlong = [&](double amount) {
+    std::vector<std::array<double, 2>> coords = made;
+    for (size_t n = 0; n < coords.size(); ++n) coords[n] = {made[n][0] + amount * V[n][0], made[n][1] + amount * V[n][1]};
+    return coords;
+  };
+  problem.moveShape(madeAlong(eps), movedAlong(problem, V, eps));
   if (!toolsAtState.is_null()) {
     toolsPlus = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
     xPlus.update(1.0, *toolsPlus, -1.0, *toolsAtState, 1.0);
@@ -134,8 +141,8 @@ MeshPartials meshPartials(Problem& problem, const Vector& state, const std::vect
   problem.assembler().residual(xPlus, plus);
   const auto phiPlus = problem.evaluateResponses(xPlus);
   const double forcePlus = inflow ? problem.rigidInflowForce(xPlus) : 0.0;
-  problem.moveNodes(base);
-  problem.moveNodes(movedAlong(problem, V, -eps));
+  problem.moveShape(made, base);
+  problem.moveShape(madeAlong(-eps), movedAlong(problem, V, -eps));
   if (!toolsAtState.is_null()) {
     toolsMinus = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
     xMinus.update(1.0, *toolsMinus, -1.0, *toolsAtState, 1.0);
@@ -143,7 +150,7 @@ MeshPartials meshPartials(Problem& problem, const Vector& state, const std::vect
   problem.assembler().residual(xMinus, minus);
   const auto phiMinus = problem.evaluateResponses(xMinus);
   const double forceMinus = inflow ? problem.rigidInflowForce(xMinus) : 0.0;
-  problem.moveNodes(base);
+  problem.moveShape(made, base);
   out.dRdh->update(1.0 / (2 * eps), plus, -1.0 / (2 * eps), minus, 0.0);
   for (const auto& [name, value] : phiPlus) out.dPhidh[name] = (value - phiMinus.at(name)) / (2 * eps);
   out.dInflowForce = (forcePlus - forceMinus) / (2 * eps);

@@ -17,11 +17,12 @@ PerturbedRun solvePerturbed(Problem& problem, const SensitivityParameter& h, dou
   // A Geo Parameter: the .geo meshed again at h + δ, the free surfaces' displacements carried over.
   const std::vector<std::array<double, 2>> baseShape = problem.mesh().coords;
   if (h.isGeo()) {
-    std::vector<std::array<double, 2>> shape = meshedAt(problem, h.geoName, h.geoValue + delta);
+    const std::vector<std::array<double, 2>> madeThere = meshedAt(problem, h.geoName, h.geoValue + delta);
+    std::vector<std::array<double, 2>> shape = madeThere;
     const Mesh made = problem.meshAsMade();
     for (size_t n = 0; n < shape.size(); ++n)
       for (int d = 0; d < 2; ++d) shape[n][d] += baseShape[n][d] - made.coords[n][d];
-    problem.moveNodes(shape);
+    problem.moveShape(madeThere, shape);  // the tools too
   }
   if (h.isBoundaryValue()) problem.shiftBoundaryValue(h.group, h.entry, delta);
   for (ContactWall& wall : walls) wall.resetChangeCounts();
@@ -88,7 +89,7 @@ PerturbedRun solvePerturbed(Problem& problem, const SensitivityParameter& h, dou
     }
     problem.moveNodes(shape);
   }
-  if (h.isGeo()) problem.moveNodes(baseShape);
+  if (h.isGeo()) problem.moveShape(problem.meshAsMade().coords, baseShape);
   if (h.isBoundaryValue()) problem.shiftBoundaryValue(h.group, h.entry, -delta);
   if (inflow) problem.setRigidInflowSpeed(baseSpeed);
   for (size_t w = 0; w < walls.size(); ++w) walls[w].restore(saved[w]);

@@ -103,6 +103,10 @@ class BoundaryConditions {
   /// constraints) after the mesh's nodes moved; InputError if a Symmetry group is no longer
   /// straight.
   void refreshGeometry(const Mesh& mesh);
+  /// The directions that `Parallel To` takes from a tool's face (fixed as made, so that the
+  /// free-surface loop's moves of a released wall do not turn them) taken again from `made`, the
+  /// mesh as made moved by a shape parameter (Problem::moveShape); refreshGeometry applies them.
+  void setToolShape(const Mesh& made);
 
   /// Sets entry `entry` (a number: Velocity X, Velocity Y, ...) of group `group`'s condition to
   /// `value` and rebuilds the constraints (a boundary value's sensitivity and its check).

@@ -69,6 +69,10 @@ class ContactWall {
   /// Re-reads the node coordinates from `mesh` (moved nodes): arc length, normals, segment
   /// lengths. The convex-corner normals are cleared: markConvexToolCorners() sets them again.
   void refreshGeometry(const Mesh& mesh);
+  /// Sets the tool itself (the wall as made: what gap() measures from and, for a wall whose
+  /// released nodes are free surfaces, the normals) from `made`, the mesh as made moved by a shape
+  /// parameter (Problem::moveShape). Free-surface moves leave the tool where it was made.
+  void setTool(const Mesh& made);
   /// Whether the released tail of this wall is a free surface (Released Nodes = Free Surface),
   /// and the group at the wall's upstream end (Start Group).
   bool releasedFreeSurface() const { return m_settings.releasedFreeSurface; }

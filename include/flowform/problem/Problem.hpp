@@ -96,6 +96,12 @@ class Problem {
   /// walls' curves and corners, the symmetry directions; the factors are dropped. The
   /// solution is kept as the next solve's start.
   void moveNodes(const std::vector<std::array<double, 2>>& coords);
+  /// A shape parameter's move: the tools (what the walls measure their gap from, the faces that
+  /// `Parallel To` follows) to the mesh as made moved to `madeCoords`, then the nodes to `coords`
+  /// (the free surfaces' displacements carried by the caller). moveShape(meshAsMade().coords,
+  /// mesh().coords) puts the tools back where they were made.
+  void moveShape(const std::vector<std::array<double, 2>>& madeCoords,
+                 const std::vector<std::array<double, 2>>& coords);
 
   /// A Newton solver on the case's Solver sublist; `refreshScales` makes the walls take their
   /// penalty scales from the state before every Newton solve.

@@ -15,7 +15,8 @@
 // With V, the parameter enters the DDM like any other (docs/theory.md §4): K_t dq/dh = −∂R/∂h with
 //     ∂R/∂h = ∂R/∂X V,      ∂φ/∂h = ∂φ/∂X V,
 // both central differences of the residual and the responses at X ± εV with q held (ε V at most
-// kMeshPartialMove of the mesh's size), whatever the mesh moves carries along: the wall normals, a rolling
+// kMeshPartialMove of the mesh's size), the tools moved too (Problem::moveShape: the mesh as made
+// moved along V), and whatever the mesh moves carries along: the wall normals, a rolling
 // wall's fitted centre, the symmetry directions, the Dirichlet rows' prescribed values. A moving
 // tool's nodes keep their velocity relative to the tool instead (q + Q_h ε at X + εV, Q_h the tool
 // velocities' change per unit h, contact/ToolVelocities.hpp): the partials are then along (V, Q_h)
