@@ -124,39 +124,37 @@ MeshPartials meshPartials(Problem& problem, const Vector& state, const std::vect
   const double eps = kMeshPartialMove * std::hypot(hi[0] - lo[0], hi[1] - lo[1]) / largest;
   const bool inflow = !problem.boundaryConditions().rigidInflow().group.empty();
   const Teuchos::RCP<const Vector> toolsAtState = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
-  Vector plus(x.getMap()), minus(x.getMap()), xPlus(x, Teuchos::Copy), xMinus(x, Teuchos::Copy);
-  Teuchos::RCP<Vector> toolsPlus, toolsMinus;
   // The tools move with the shape (Problem::moveShape): the mesh as made along V as well.
   const std::vector<std::array<double, 2>> made = problem.meshAsMade().coords;
-  auto madeAlong = [&](double amount) {
-    std::vector<std::array<double, 2>> coords = made;
-    for (size_t n = 0; n < coords.size(); ++n) coords[n] = {made[n][0] + amount * V[n][0], made[n][1] + amount * V[n][1]};
-    return coords;
+  struct Moved {
+    Teuchos::RCP<Vector> residual, tools;
+    std::map<std::string, double> phi;
+    double force = 0.0;
   };
-  problem.moveShape(madeAlong(eps), movedAlong(problem, V, eps));
-  if (!toolsAtState.is_null()) {
-    toolsPlus = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
-    xPlus.update(1.0, *toolsPlus, -1.0, *toolsAtState, 1.0);
-  }
-  problem.assembler().residual(xPlus, plus);
-  const auto phiPlus = problem.evaluateResponses(xPlus);
-  const double forcePlus = inflow ? problem.rigidInflowForce(xPlus) : 0.0;
-  problem.moveShape(made, base);
-  problem.moveShape(madeAlong(-eps), movedAlong(problem, V, -eps));
-  if (!toolsAtState.is_null()) {
-    toolsMinus = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
-    xMinus.update(1.0, *toolsMinus, -1.0, *toolsAtState, 1.0);
-  }
-  problem.assembler().residual(xMinus, minus);
-  const auto phiMinus = problem.evaluateResponses(xMinus);
-  const double forceMinus = inflow ? problem.rigidInflowForce(xMinus) : 0.0;
-  problem.moveShape(made, base);
-  out.dRdh->update(1.0 / (2 * eps), plus, -1.0 / (2 * eps), minus, 0.0);
-  for (const auto& [name, value] : phiPlus) out.dPhidh[name] = (value - phiMinus.at(name)) / (2 * eps);
-  out.dInflowForce = (forcePlus - forceMinus) / (2 * eps);
+  auto evaluateMoved = [&](double amount) {
+    std::vector<std::array<double, 2>> madeThere = made;
+    for (size_t n = 0; n < made.size(); ++n) madeThere[n] = {made[n][0] + amount * V[n][0], made[n][1] + amount * V[n][1]};
+    problem.moveShape(madeThere, movedAlong(problem, V, amount));
+    Vector xMoved(x, Teuchos::Copy);
+    Moved moved;
+    if (!toolsAtState.is_null()) {
+      moved.tools = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
+      xMoved.update(1.0, *moved.tools, -1.0, *toolsAtState, 1.0);
+    }
+    moved.residual = Teuchos::rcp(new Vector(x.getMap()));
+    problem.assembler().residual(xMoved, *moved.residual);
+    moved.phi = problem.evaluateResponses(xMoved);
+    moved.force = inflow ? problem.rigidInflowForce(xMoved) : 0.0;
+    problem.moveShape(made, base);
+    return moved;
+  };
+  const Moved plus = evaluateMoved(eps), minus = evaluateMoved(-eps);
+  out.dRdh->update(1.0 / (2 * eps), *plus.residual, -1.0 / (2 * eps), *minus.residual, 0.0);
+  for (const auto& [name, value] : plus.phi) out.dPhidh[name] = (value - minus.phi.at(name)) / (2 * eps);
+  out.dInflowForce = (plus.force - minus.force) / (2 * eps);
   if (!toolsAtState.is_null()) {
     out.velocityShift = Teuchos::rcp(new Vector(x.getMap()));
-    out.velocityShift->update(1.0 / (2 * eps), *toolsPlus, -1.0 / (2 * eps), *toolsMinus, 0.0);
+    out.velocityShift->update(1.0 / (2 * eps), *plus.tools, -1.0 / (2 * eps), *minus.tools, 0.0);
   }
   return out;
 }
