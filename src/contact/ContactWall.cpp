@@ -179,8 +179,7 @@ ContactWall::ContactWall(const std::string& group, const Teuchos::ParameterList&
   m_viscosity.assign(m_curve.nodes.size(), 1.0);
   m_flowStress.assign(m_curve.nodes.size(), 1.0);
   refreshGeometry(mesh);
-  m_toolCoords = m_coords;
-  m_toolNormals = m_curve.normals;
+  setTool(mesh);  // the tool where the mesh was made
   checkTangency(group);
   if (m_settings.releasedFreeSurface && !mesh.hasBoundary(m_settings.upstreamGroup))
     throw InputError("Boundary Conditions/" + group + "/Start Group: mesh '" + mesh.source +

@@ -19,4 +19,13 @@ Teuchos::RCP<Vector> toolVelocities(const std::vector<ContactWall>& walls, const
   return v;
 }
 
+Teuchos::RCP<Vector> followTools(const std::vector<ContactWall>& walls, const DofMap& dofMap, const Vector& x,
+                                 const Teuchos::RCP<const Vector>& before, Vector& moved) {
+  moved.assign(x);
+  if (before.is_null()) return Teuchos::null;
+  Teuchos::RCP<Vector> now = toolVelocities(walls, dofMap, x.getMap());
+  moved.update(1.0, *now, -1.0, *before, 1.0);
+  return now;
+}
+
 }  // namespace flowform

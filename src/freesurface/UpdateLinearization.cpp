@@ -59,11 +59,6 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
   // viscosity), to be cancelled by the flow's response to a few units: a cancellation the
   // differences' round-off did not survive on fine meshes.
   const Teuchos::RCP<const Vector> toolsAtState = toolVelocities(at.walls, dofMap, q.getMap());
-  auto followingTools = [&](Vector& x) {
-    x.assign(q);
-    if (toolsAtState.is_null()) return;
-    x.update(1.0, *toolVelocities(at.walls, dofMap, q.getMap()), -1.0, *toolsAtState, 1.0);
-  };
 
   // Pass 1, the positions: ∂R/∂b_j (with the interior following), ∂U/∂b_j, ∂φ/∂b_j.
   // An unknown that slides a contact wall's nodes along their tool (an attachment point) moves
@@ -92,11 +87,11 @@ UpdateLinearization::UpdateLinearization(const SurfaceLinearizationState& at, bo
       double forcePlus = 0.0, forceMinus = 0.0;
       std::map<std::string, double> phiPlus, phiMinus;
       at.moveNodes(extension.positions(displacementOf(j, eps)));
-      followingTools(qMoved);
+      followTools(at.walls, dofMap, q, toolsAtState, qMoved);
       evaluateMoved(qMoved, rPlus, forcePlus, phiPlus);
       const std::vector<double> uPlus = updateAt(qMoved);
       at.moveNodes(extension.positions(displacementOf(j, -eps)));
-      followingTools(qMoved);
+      followTools(at.walls, dofMap, q, toolsAtState, qMoved);
       evaluateMoved(qMoved, rMinus, forceMinus, phiMinus);
       const std::vector<double> uMinus = updateAt(qMoved);
       dFdb[j] = (forcePlus - forceMinus) / (2 * eps);

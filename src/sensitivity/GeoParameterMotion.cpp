@@ -82,9 +82,9 @@ std::vector<std::array<double, 2>> geoParameterMotion(const Problem& problem, co
   return V;
 }
 
-std::vector<std::array<double, 2>> movedAlong(const Problem& problem, const std::vector<std::array<double, 2>>& V,
-                                              double amount) {
-  std::vector<std::array<double, 2>> coords = problem.mesh().coords;
+std::vector<std::array<double, 2>> movedAlong(const std::vector<std::array<double, 2>>& from,
+                                              const std::vector<std::array<double, 2>>& V, double amount) {
+  std::vector<std::array<double, 2>> coords = from;
   for (size_t n = 0; n < coords.size(); ++n) {
     coords[n][0] += amount * V[n][0];
     coords[n][1] += amount * V[n][1];
@@ -132,15 +132,10 @@ MeshPartials meshPartials(Problem& problem, const Vector& state, const std::vect
     double force = 0.0;
   };
   auto evaluateMoved = [&](double amount) {
-    std::vector<std::array<double, 2>> madeThere = made;
-    for (size_t n = 0; n < made.size(); ++n) madeThere[n] = {made[n][0] + amount * V[n][0], made[n][1] + amount * V[n][1]};
-    problem.moveShape(madeThere, movedAlong(problem, V, amount));
-    Vector xMoved(x, Teuchos::Copy);
+    problem.moveShape(movedAlong(made, V, amount), movedAlong(base, V, amount));
+    Vector xMoved(x.getMap());
     Moved moved;
-    if (!toolsAtState.is_null()) {
-      moved.tools = toolVelocities(problem.contactWalls(), problem.dofMap(), x.getMap());
-      xMoved.update(1.0, *moved.tools, -1.0, *toolsAtState, 1.0);
-    }
+    moved.tools = followTools(problem.contactWalls(), problem.dofMap(), x, toolsAtState, xMoved);
     moved.residual = Teuchos::rcp(new Vector(x.getMap()));
     problem.assembler().residual(xMoved, *moved.residual);
     moved.phi = problem.evaluateResponses(xMoved);

@@ -19,4 +19,9 @@ namespace flowform {
 Teuchos::RCP<Vector> toolVelocities(const std::vector<ContactWall>& walls, const DofMap& dofMap,
                                     const Teuchos::RCP<const Map>& map);
 
+/// `moved` = x + v_w(now) − `before` (before = toolVelocities at x's positions; null: `moved` = x),
+/// the flow that follows the tools to where the walls are now. Returns v_w(now) (null with `before`).
+Teuchos::RCP<Vector> followTools(const std::vector<ContactWall>& walls, const DofMap& dofMap, const Vector& x,
+                                 const Teuchos::RCP<const Vector>& before, Vector& moved);
+
 }  // namespace flowform

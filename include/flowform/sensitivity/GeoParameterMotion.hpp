@@ -79,8 +79,9 @@ GeoPartialsSource geoPartialsOf(Problem& problem);
 /// put back (collective).
 MeshPartials meshPartials(Problem& problem, const Vector& x, const std::vector<std::array<double, 2>>& V);
 
-/// The problem's mesh moved by `amount` V (the free-surface displacements kept).
-std::vector<std::array<double, 2>> movedAlong(const Problem& problem, const std::vector<std::array<double, 2>>& V,
-                                              double amount);
+/// `coords` moved by `amount` V (the problem's mesh with its free-surface displacements, or the
+/// mesh as made that sets the tools).
+std::vector<std::array<double, 2>> movedAlong(const std::vector<std::array<double, 2>>& coords,
+                                              const std::vector<std::array<double, 2>>& V, double amount);
 
 }  // namespace flowform
