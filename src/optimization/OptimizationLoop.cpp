@@ -9,15 +9,19 @@
 #include <Teuchos_LAPACK.hpp>
 #include <ROL_OptimizationProblem.hpp>
 #include <ROL_OptimizationSolver.hpp>
+#include <ROL_Problem.hpp>
+#include <ROL_Solver.hpp>
 #include <ROL_StdVector.hpp>
 #include <nlohmann/json.hpp>
 
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
+#include "flowform/optimization/DesignConstraint.hpp"
 #include "flowform/optimization/DesignObjective.hpp"
 #include "flowform/optimization/DesignParameters.hpp"
 #include "flowform/optimization/DesignRuns.hpp"
 #include "flowform/optimization/OptimizationSettings.hpp"
+#include "flowform/optimization/TrustRegionSqp.hpp"
 
 namespace flowform {
 
@@ -55,6 +59,22 @@ Teuchos::ParameterList rolParameters(const OptimizationSettings& s) {
   status.set("Gradient Tolerance", s.gradientTolerance);
   status.set("Step Tolerance", s.stepTolerance);
   status.set("Iteration Limit", s.iterationLimit);
+  if (s.isConstrained()) {
+    // ROL's general-constraint algorithms (TypeG), each subproblem on the design's bounds solved by
+    // the Algorithm (TypeB: Trust Region = Lin-More's projected Newton, Line Search). The
+    // constraints' curvature is not known (DesignConstraint): the augmented Lagrangian's
+    // Gauss–Newton level (objective Hessian + μ AᵀA).
+    step.set("Type", s.constraintAlgorithm);
+    Teuchos::ParameterList& al = step.sublist("Augmented Lagrangian");
+    al.set("Subproblem Step Type", s.algorithm);
+    al.set("Subproblem Iteration Limit", s.iterationLimit);
+    al.set("Level of Hessian Approximation", 2);
+    Teuchos::ParameterList& lcl = step.sublist("Stabilized LCL");
+    lcl.set("Subproblem Step Type", s.algorithm);
+    lcl.set("Subproblem Iteration Limit", s.iterationLimit);
+    step.sublist("Interior Point").sublist("Subproblem").set("Iteration Limit", s.iterationLimit);
+    status.set("Constraint Tolerance", s.constraintTolerance);
+  }
   return list;
 }
 
@@ -174,7 +194,10 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
   std::vector<double> hStart = design.initial(), hFinal = hStart;
   std::vector<std::unique_ptr<DesignRuns>> allRuns;
   ROL::Ptr<DesignObjective> objective;
-  double scale = 0.0, gnorm = 0.0;
+  ROL::Ptr<DesignConstraint> constraint;
+  double scale = 0.0, gnorm = 0.0, cnorm = 0.0;
+  std::string sqpStatus;             ///< the SQP's stop (ROL's status names have no place for its own)
+  std::vector<double> multipliers;   ///< the SQP's λ_i of the constraints (scaled)
   int iterations = 0;
   std::string status, failure;
   bool converged = false;
@@ -183,30 +206,71 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
     const Teuchos::ParameterList cycleCase = design.applied(caseParams, hStart);
     const DesignParameters cycleDesign(settings.design, cycleCase);
     allRuns.push_back(std::make_unique<DesignRuns>(cycleCase, factory, cycleDesign, settings.warmStart,
-                                                   settings.isMisfit() ? settings.measured
-                                                                       : std::vector<std::string>{settings.objective}));
+                                                   settings.responsesRead()));
     DesignRuns& runs = *allRuns.back();
     objective = ROL::makePtr<DesignObjective>(settings, runs, scale);
     auto z = stdVector(objective->scaled(hStart));
     auto bounds = ROL::makePtr<ROL::Bounds<double>>(stdVector(std::vector<double>(n, 0.0)),
                                                     stdVector(std::vector<double>(n, 1.0)));
-    ROL::OptimizationProblem<double> problem(objective, z, bounds);
     Teuchos::ParameterList rol = rolParameters(settings);
-    ROL::OptimizationSolver<double> solver(problem, rol);
     std::ostringstream rolLog;
-    try {
-      solver.solve(rolLog);
-    } catch (const DesignNotSolved& e) {
-      failure = e.what();
+    ROL::Ptr<const ROL::AlgorithmState<double>> state;
+    if (!settings.isConstrained()) {
+      ROL::OptimizationProblem<double> problem(objective, z, bounds);
+      ROL::OptimizationSolver<double> solver(problem, rol);
+      try {
+        solver.solve(rolLog);
+      } catch (const DesignNotSolved& e) {
+        failure = e.what();
+      }
+      state = solver.getAlgorithmState();
+    } else if (settings.constraintAlgorithm == "Trust Region SQP") {
+      constraint = ROL::makePtr<DesignConstraint>(settings, runs, *objective);
+      auto sqpState = ROL::makePtr<ROL::AlgorithmState<double>>();
+      try {
+        const SqpResult sqp = runTrustRegionSqp(*objective, *constraint, *z->getVector(), settings, log());
+        *z->getVector() = sqp.z;
+        sqpState->iter = sqp.iterations;
+        sqpState->gnorm = sqp.criticality;
+        sqpState->cnorm = sqp.violation;
+        sqpState->statusFlag = sqp.converged ? ROL::EXITSTATUS_CONVERGED : ROL::EXITSTATUS_STEPTOL;
+        sqpStatus = sqp.status;
+        multipliers = sqp.multipliers;
+      } catch (const DesignNotSolved& e) {
+        failure = e.what();
+      }
+      state = sqpState;
+    } else {
+      constraint = ROL::makePtr<DesignConstraint>(settings, runs, *objective);
+      auto problem = ROL::makePtr<ROL::Problem<double>>(objective, z);
+      problem->addBoundConstraint(bounds);
+      const ROL::Ptr<ROL::BoundConstraint<double>> constraintBounds = constraint->bounds();
+      problem->addConstraint("responses", ROL::Ptr<ROL::Constraint<double>>(constraint), constraint->zero(),
+                             constraintBounds);
+      problem->finalize(false, false);
+      ROL::Solver<double> solver(problem, rol);
+      try {
+        solver.solve(rolLog);
+      } catch (const DesignNotSolved& e) {
+        failure = e.what();
+      }
+      state = solver.getAlgorithmState();
     }
     log() << rolLog.str();
-    const auto state = solver.getAlgorithmState();
     if (!runs.history().empty()) scale = objective->scale();
     hFinal = objective->design(*z->getVector());
     iterations += state->iter;
     gnorm = state->gnorm;
-    status = failure.empty() ? ROL::EExitStatusToString(state->statusFlag) : "a solve did not converge";
+    status = !failure.empty()      ? "a solve did not converge"
+             : !sqpStatus.empty() ? sqpStatus
+                                  : ROL::EExitStatusToString(state->statusFlag);
     converged = failure.empty() && state->statusFlag == ROL::EXITSTATUS_CONVERGED;
+    if (constraint) {  // ROL's own test is on the slack-augmented constraint; the responses' bounds decide
+      cnorm = state->cnorm;
+      if (converged && !runs.history().empty())
+        converged = constraint->violation(runs.at(objective->design(*z->getVector())).functionals) <=
+                    settings.constraintTolerance;
+    }
     // The record of every solve: design, objective, projected gradient (scaled), Newton, seconds.
     for (const DesignSolution& s : runs.history()) {
       nlohmann::json entry = {{"solve", solves.size() + 1}, {"cycle", cycle}, {"newton_iterations", s.newtonIterations},
@@ -215,6 +279,7 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
       try {
         entry["objective"] = objective->objective(s);
         entry["gradient_norm"] = projectedGradientNorm(objective->scaled(s.design), objective->scaledGradient(s));
+        if (constraint) entry["constraint_violation"] = constraint->violation(s.functionals);
       } catch (const DesignNotSolved&) {
       }
       solves.push_back(entry);
@@ -308,12 +373,41 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
   } else if (final->exitStatus() == 0) {
     block["objective"] = f.at(settings.objective);
   }
+  double violation = 0.0;
+  if (constraint && final->exitStatus() == 0) {
+    violation = constraint->violation(f);
+    block["constraint_violation"] = violation;
+    block["constraint_norm"] = cnorm;
+    for (std::size_t i = 0; i < settings.constrained.size(); ++i) {
+      const double lo = settings.constraintLower[i], hi = settings.constraintUpper[i], phi = f.at(settings.constrained[i]);
+      const double tol = settings.constraintTolerance * constraint->scales()[i];
+      block["constraints"][settings.constrained[i]] = {
+          {"value", phi},
+          {"lower", std::isfinite(lo) ? nlohmann::json(lo) : nlohmann::json(nullptr)},
+          {"upper", std::isfinite(hi) ? nlohmann::json(hi) : nlohmann::json(nullptr)},
+          {"met", phi >= lo - tol && phi <= hi + tol},
+          {"active", std::abs(phi - lo) <= tol || std::abs(phi - hi) <= tol}};
+      // The SQP's multiplier as a shadow price: −λ_i is dJ*/d(bound), J scaled; in the objective's
+      // units per unit of the response (J = ±φ/|φ(h_0)|; the misfit is its own unit).
+      if (i < multipliers.size()) {
+        const double perScaled = -multipliers[i] / constraint->scales()[i];
+        block["constraints"][settings.constrained[i]]["shadow_price"] =
+            settings.isMisfit() ? perScaled : (settings.maximize ? -1.0 : 1.0) * scale * perScaled;
+      }
+    }
+  }
   block["solves"] = totalSolves + 1;  // the final one too
   final->addSummaryBlock("optimization", block);
-  if (!converged && final->exitStatus() == 0) {
+  if (final->exitStatus() == 0 && violation > settings.constraintTolerance) {
+    std::ostringstream why;
+    why << "the final design violates a constraint by " << violation
+        << " of its bound, above Optimization/Constraint Tolerance " << settings.constraintTolerance;
+    final->setNotMet(why.str());
+  } else if (!converged && final->exitStatus() == 0) {
     std::ostringstream why;
     why << "the optimizer stopped (" << status << ") with the projected gradient " << gnorm
         << " above Optimization/Gradient Tolerance " << settings.gradientTolerance;
+    if (constraint) why << " or the constraint violation " << cnorm << " above Optimization/Constraint Tolerance";
     final->setNotMet(why.str());
   }
   final->writeOutput(outDir);

@@ -1,5 +1,6 @@
 #include "flowform/optimization/OptimizationSettings.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -32,6 +33,25 @@ void buildOptimizationParameters(const ValidList& valid) {
   valid->set("Measurement Errors", Array<double>(),
              "the standard error of each measured value (> 0; empty: 1 each); the design's confidence interval "
              "comes from the Gauss-Newton Hessian with them");
+  valid->set("Constrained Responses", Array<std::string>(),
+             "responses held within bounds (constraints, docs/optimization.md §1): each between its Constraint "
+             "Lower Bound and Constraint Upper Bound");
+  valid->set("Constraint Lower Bounds", Array<double>(),
+             "one per Constrained Response, or none (no lower bounds); a value at or below -1e30 means none");
+  valid->set("Constraint Upper Bounds", Array<double>(),
+             "one per Constrained Response, or none (no upper bounds); a value at or above 1e30 means none");
+  valid->set("Constraint Tolerance", 1e-3,
+             "a constraint counts as met when its response lies within its bounds to this fraction of the bound's "
+             "magnitude (scaled constraint violation; the optimizer's feasibility tolerance)",
+             inRange(1e-12, 1.0));
+  Teuchos::setStringToIntegralParameter<int>(
+      "Constraint Algorithm", "Trust Region SQP",
+      "with Constrained Responses: Trust Region SQP (an S-l1-QP, one solve per iteration, its subproblems solved "
+      "by ROL, docs/optimization.md section 1), or one of ROL's own algorithms for general constraints (each of "
+      "their subproblems solved by the Algorithm on the design's bounds; many more solves)",
+      Teuchos::tuple<std::string>("Trust Region SQP", "Augmented Lagrangian", "Stabilized LCL", "Moreau-Yosida",
+                                  "Interior Point"),
+      valid.get());
   Teuchos::setStringToIntegralParameter<int>(
       "Algorithm", "Trust Region",
       "ROL's step: Trust Region (truncated CG, bounds by projection) or Line Search (quasi-Newton, projected)",
@@ -77,6 +97,11 @@ OptimizationSettings::OptimizationSettings(const ParameterList& caseParams) {
   measured = vectorOf<std::string>(list, "Measured Responses");
   values = vectorOf<double>(list, "Measured Values");
   errors = vectorOf<double>(list, "Measurement Errors");
+  constrained = vectorOf<std::string>(list, "Constrained Responses");
+  constraintLower = vectorOf<double>(list, "Constraint Lower Bounds");
+  constraintUpper = vectorOf<double>(list, "Constraint Upper Bounds");
+  constraintTolerance = list.get<double>("Constraint Tolerance");
+  constraintAlgorithm = list.get<std::string>("Constraint Algorithm");
   algorithm = list.get<std::string>("Algorithm");
   gradientTolerance = list.get<double>("Gradient Tolerance");
   stepTolerance = list.get<double>("Step Tolerance");
@@ -109,12 +134,42 @@ OptimizationSettings::OptimizationSettings(const ParameterList& caseParams) {
       if (!std::isfinite(values[i]) || !(errors[i] > 0.0) || !std::isfinite(errors[i]))
         throw InputError("Optimization: the measurement of '" + measured[i] + "' needs a finite value and an error > 0");
   }
+  // Constraints: a missing side is ±infinity; a bound beyond ±1e30 is none (Teuchos arrays hold no inf).
+  for (auto* bounds : {&constraintLower, &constraintUpper}) {
+    const bool lowerSide = bounds == &constraintLower;
+    if (bounds->empty()) bounds->assign(constrained.size(), lowerSide ? -kNoBound : kNoBound);
+    if (bounds->size() != constrained.size())
+      throw InputError(std::string("Optimization/Constraint ") + (lowerSide ? "Lower" : "Upper") +
+                       " Bounds: one per Constrained Response (" + std::to_string(constrained.size()) +
+                       ") or none, given " + std::to_string(bounds->size()));
+    for (double& b : *bounds)
+      if (std::isnan(b) || std::abs(b) >= 1e30) b = (lowerSide ? -1.0 : 1.0) * kNoBound;
+  }
+  for (std::size_t i = 0; i < constrained.size(); ++i) {
+    const bool hasLower = constraintLower[i] > -kNoBound, hasUpper = constraintUpper[i] < kNoBound;
+    if (!hasLower && !hasUpper)
+      throw InputError("Optimization/Constrained Responses: '" + constrained[i] +
+                       "' has neither a lower nor an upper bound (Constraint Lower Bounds, Constraint Upper Bounds)");
+    if (hasLower && hasUpper && !(constraintLower[i] < constraintUpper[i]))
+      throw InputError("Optimization: the constraint on '" + constrained[i] + "' needs its lower bound " +
+                       std::to_string(constraintLower[i]) + " below its upper bound " +
+                       std::to_string(constraintUpper[i]));
+    for (std::size_t j = 0; j < i; ++j)
+      if (constrained[j] == constrained[i])
+        throw InputError("Optimization/Constrained Responses: '" + constrained[i] +
+                         "' is named twice; give it both bounds once");
+  }
   const ParameterList& responses = caseParams.sublist("Responses");
-  std::vector<std::string> named = measured;
-  if (!objective.empty()) named.push_back(objective);
-  for (const std::string& name : named)
+  for (const std::string& name : responsesRead())
     if (!responses.isSublist(name))
       throw InputError("Optimization: '" + name + "' is not one of the case's Responses");
+}
+
+std::vector<std::string> OptimizationSettings::responsesRead() const {
+  std::vector<std::string> names = isMisfit() ? measured : std::vector<std::string>{objective};
+  for (const std::string& name : constrained)
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  return names;
 }
 
 }  // namespace flowform

@@ -37,10 +37,11 @@ class DesignObjective : public ROL::Objective<double> {
   std::vector<double> scaledGradient(const DesignSolution& s) const;
   /// |φ(h_0)|, the response objective's scale.
   double scale() const { return m_scale; }
+  /// dφ/dh of a solved design (DesignNotSolved when the solve did not differentiate φ by h).
+  double derivative(const DesignSolution& s, const std::string& response, const std::string& parameter) const;
 
  private:
   const DesignSolution& solved(const ROL::Vector<double>& z);
-  double derivative(const DesignSolution& s, const std::string& response, const std::string& parameter) const;
 
   const OptimizationSettings& m_settings;
   DesignRuns& m_runs;

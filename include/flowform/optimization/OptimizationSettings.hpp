@@ -3,6 +3,7 @@
 // values), how (ROL's algorithm and tolerances). No sublist: nothing of this runs.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -25,13 +26,22 @@ struct OptimizationSettings {
   bool maximize = false;
   std::vector<std::string> measured;  ///< the misfit's responses
   std::vector<double> values, errors;  ///< their measured values and standard errors
-  std::string algorithm;  ///< "Trust Region" or "Line Search"
+  /// Constraints: lower_i <= phi_i <= upper_i; a side without a bound holds ∓kNoBound.
+  static constexpr double kNoBound = std::numeric_limits<double>::infinity();
+  std::vector<std::string> constrained;
+  std::vector<double> constraintLower, constraintUpper;
+  double constraintTolerance = 1e-3;
+  std::string constraintAlgorithm;  ///< ROL's TypeG algorithm ("Augmented Lagrangian", ...)
+  std::string algorithm;  ///< "Trust Region" or "Line Search" (a constrained problem's subproblems)
   double gradientTolerance = 1e-6, stepTolerance = 1e-8, initialRadius = 1.0;
   int iterationLimit = 30;
   bool warmStart = true;
   int remeshingCycles = 3;
 
   bool isMisfit() const { return objective.empty(); }
+  bool isConstrained() const { return !constrained.empty(); }
+  /// Every response the objective and the constraints read (what each solve differentiates).
+  std::vector<std::string> responsesRead() const;
 };
 
 /// Whether the case has an Optimization sublist.
