@@ -16,7 +16,7 @@ double maxAbs(const std::vector<double>& v) {
 }
 
 /// Solves M y = b (M symmetric positive definite, small) by Cholesky; false if M is not.
-bool choleskySolve(Matrix M, std::vector<double>& b) {
+bool choleskySolve(Matrix M, std::vector<double>& b) {  // b untouched when false
   const std::size_t n = b.size();
   double largest = 0.0;
   for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, std::abs(M[i][i]));
@@ -74,7 +74,14 @@ DenseQpResult solveDenseQp(const Matrix& H, const std::vector<double>& f, const 
         for (std::size_t k = 0; k < n; ++k) M[j][k] += G[i][j] * w * G[i][k];
       }
     }
-    if (!choleskySolve(M, rhs)) return false;
+    // Near the solution of a degenerate problem S⁻¹Z spans many decades: a tiny shift keeps the
+    // factorization (it only damps the step).
+    double largest = 0.0;
+    for (std::size_t j = 0; j < n; ++j) largest = std::max(largest, M[j][j]);
+    for (double shift = 0.0; !choleskySolve(M, rhs); shift = shift == 0.0 ? 1e-14 * largest : 100.0 * shift) {
+      if (shift > 1e-6 * largest) return false;
+      for (std::size_t j = 0; j < n; ++j) M[j][j] += shift;
+    }
     dx = rhs;
     for (std::size_t i = 0; i < m; ++i) {
       double Gdx = 0.0;

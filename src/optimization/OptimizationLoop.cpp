@@ -381,12 +381,13 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
     for (std::size_t i = 0; i < settings.constrained.size(); ++i) {
       const double lo = settings.constraintLower[i], hi = settings.constraintUpper[i], phi = f.at(settings.constrained[i]);
       const double tol = settings.constraintTolerance * constraint->scales()[i];
+      const double near = kActiveFactor * tol;  // the SQP's multipliers take the bounds this near as active
       block["constraints"][settings.constrained[i]] = {
           {"value", phi},
           {"lower", std::isfinite(lo) ? nlohmann::json(lo) : nlohmann::json(nullptr)},
           {"upper", std::isfinite(hi) ? nlohmann::json(hi) : nlohmann::json(nullptr)},
           {"met", phi >= lo - tol && phi <= hi + tol},
-          {"active", std::abs(phi - lo) <= tol || std::abs(phi - hi) <= tol}};
+          {"active", std::abs(phi - lo) <= near || std::abs(phi - hi) <= near}};
       // The SQP's multiplier as a shadow price: −λ_i is dJ*/d(bound), J scaled; in the objective's
       // units per unit of the response (J = ±φ/|φ(h_0)|; the misfit is its own unit).
       if (i < multipliers.size()) {

@@ -314,7 +314,7 @@ SqpResult runTrustRegionSqp(DesignObjective& objective, DesignConstraint& constr
   }
   result.z = z;
   result.penalty = rho;
-  result.multipliers = multipliers(L, z, lo, hi, std::max(10.0 * ctol, 1e-8));
+  result.multipliers = multipliers(L, z, lo, hi, kActiveFactor * ctol);
   return result;
 }
 

@@ -40,3 +40,27 @@ flowform_exit_test(bad_input_optimization_with_adaptivity CASE ${FLOWFORM_OPT_CA
 flowform_exit_test(bad_input_reference_topology_unknown_name CASE ../../../xml/drawing.xml
   SET "Mesh/Reference Geo Parameters/beta=3"
   CONTAINS "beta")
+# Constraints (responses with bounds, the trust-region SQP): the hot extrusion's largest ram speed
+# under an exit-temperature and a force limit, and the best point of its extrusion window, against
+# independent runs and the optimum's difference by the limit (constrained_optimization_checks.py).
+add_test(NAME constrained_optimization_checks
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/constrained_optimization_checks.py
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/constrained_optimization)
+set_tests_properties(constrained_optimization_checks PROPERTIES LABELS "regression")
+# A bad constraint: exit 2 before any solve, naming the entry.
+set(FLOWFORM_CONSTRAINED_CASE ../../../xml/hot_extrusion_max_speed.xml)
+flowform_exit_test(bad_input_optimization_constraint_unknown_response CASE ${FLOWFORM_CONSTRAINED_CASE}
+  SET "Optimization/Constrained Responses={exit_temperature, drawing_force}"
+  CONTAINS "'drawing_force' is not one of the case's Responses")
+flowform_exit_test(bad_input_optimization_constraint_bounds_count CASE ${FLOWFORM_CONSTRAINED_CASE}
+  SET "Optimization/Constraint Upper Bounds={740.0}"
+  CONTAINS "Optimization/Constraint Upper Bounds: one per Constrained Response (2) or none, given 1")
+flowform_exit_test(bad_input_optimization_constraint_no_bound CASE ${FLOWFORM_CONSTRAINED_CASE}
+  SET "Optimization/Constraint Upper Bounds={}"
+  CONTAINS "'exit_temperature' has neither a lower nor an upper bound")
+flowform_exit_test(bad_input_optimization_constraint_bounds_crossed CASE ${FLOWFORM_CONSTRAINED_CASE}
+  SET "Optimization/Constraint Lower Bounds={750.0, 0.0}"
+  CONTAINS "the constraint on 'exit_temperature' needs its lower bound" "below its upper bound")
+flowform_exit_test(bad_input_optimization_constraint_named_twice CASE ${FLOWFORM_CONSTRAINED_CASE}
+  SET "Optimization/Constrained Responses={exit_temperature, exit_temperature}"
+  CONTAINS "'exit_temperature' is named twice")

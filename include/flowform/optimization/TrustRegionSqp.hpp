@@ -31,6 +31,10 @@
 
 namespace flowform {
 
+/// A constraint within this many Constraint Tolerances of a bound is active (its multiplier is
+/// estimated; summary.json marks it "active").
+constexpr double kActiveFactor = 10.0;
+
 struct SqpResult {
   std::vector<double> z;  ///< the last accepted design (scaled)
   int iterations = 0;
