@@ -15,8 +15,9 @@ double maxAbs(const std::vector<double>& v) {
   return m;
 }
 
-/// Solves M y = b (M symmetric positive definite, small) by Cholesky; false if M is not.
-bool choleskySolve(Matrix M, std::vector<double>& b) {  // b untouched when false
+}  // namespace
+
+bool choleskySolve(Matrix M, std::vector<double>& b) {
   const std::size_t n = b.size();
   double largest = 0.0;
   for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, std::abs(M[i][i]));
@@ -41,6 +42,8 @@ bool choleskySolve(Matrix M, std::vector<double>& b) {  // b untouched when fals
   }
   return true;
 }
+
+namespace {
 
 /// The largest α <= 1 with v + α dv >= 0 (kept at 99 % of the way to the boundary by the caller).
 double stepToBoundary(const std::vector<double>& v, const std::vector<double>& dv) {

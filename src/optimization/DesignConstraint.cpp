@@ -3,22 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include <ROL_StdVector.hpp>
+#include "flowform/optimization/DesignVectors.hpp"
 
 namespace flowform {
-
-namespace {
-
-const std::vector<double>& entries(const ROL::Vector<double>& v) {
-  return *dynamic_cast<const ROL::StdVector<double>&>(v).getVector();
-}
-std::vector<double>& entries(ROL::Vector<double>& v) { return *dynamic_cast<ROL::StdVector<double>&>(v).getVector(); }
-
-ROL::Ptr<ROL::StdVector<double>> stdVector(const std::vector<double>& v) {
-  return ROL::makePtr<ROL::StdVector<double>>(ROL::makePtr<std::vector<double>>(v));
-}
-
-}  // namespace
 
 DesignConstraint::DesignConstraint(const OptimizationSettings& settings, DesignRuns& runs,
                                    const DesignObjective& objective)
@@ -79,20 +66,23 @@ void DesignConstraint::applyAdjointHessian(ROL::Vector<double>& ahuv, const ROL:
   ahuv.zero();
 }
 
+namespace {
+
+/// bound_i / s_i, `none` where the side has no bound.
+std::vector<double> scaledSide(const std::vector<double>& bounds, const std::vector<double>& scale, double none) {
+  std::vector<double> out(scale.size());
+  for (std::size_t i = 0; i < scale.size(); ++i) out[i] = std::isfinite(bounds[i]) ? bounds[i] / scale[i] : none;
+  return out;
+}
+
+}  // namespace
+
 std::vector<double> DesignConstraint::scaledLower() const {
-  std::vector<double> lo(m_scale.size());
-  for (std::size_t i = 0; i < m_scale.size(); ++i)
-    lo[i] = std::isfinite(m_settings.constraintLower[i]) ? m_settings.constraintLower[i] / m_scale[i]
-                                                         : ROL::ROL_NINF<double>();
-  return lo;
+  return scaledSide(m_settings.constraintLower, m_scale, ROL::ROL_NINF<double>());
 }
 
 std::vector<double> DesignConstraint::scaledUpper() const {
-  std::vector<double> hi(m_scale.size());
-  for (std::size_t i = 0; i < m_scale.size(); ++i)
-    hi[i] = std::isfinite(m_settings.constraintUpper[i]) ? m_settings.constraintUpper[i] / m_scale[i]
-                                                         : ROL::ROL_INF<double>();
-  return hi;
+  return scaledSide(m_settings.constraintUpper, m_scale, ROL::ROL_INF<double>());
 }
 
 ROL::Ptr<ROL::Bounds<double>> DesignConstraint::bounds() const {

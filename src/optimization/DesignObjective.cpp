@@ -2,18 +2,9 @@
 
 #include <cmath>
 
-#include <ROL_StdVector.hpp>
+#include "flowform/optimization/DesignVectors.hpp"
 
 namespace flowform {
-
-namespace {
-
-const std::vector<double>& entries(const ROL::Vector<double>& v) {
-  return *dynamic_cast<const ROL::StdVector<double>&>(v).getVector();
-}
-std::vector<double>& entries(ROL::Vector<double>& v) { return *dynamic_cast<ROL::StdVector<double>&>(v).getVector(); }
-
-}  // namespace
 
 DesignObjective::DesignObjective(const OptimizationSettings& settings, DesignRuns& runs, double scale)
     : m_settings(settings), m_runs(runs), m_scale(scale > 0.0 ? scale : 1.0), m_scaleKnown(scale > 0.0) {}

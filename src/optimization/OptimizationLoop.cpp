@@ -11,7 +11,6 @@
 #include <ROL_OptimizationSolver.hpp>
 #include <ROL_Problem.hpp>
 #include <ROL_Solver.hpp>
-#include <ROL_StdVector.hpp>
 #include <nlohmann/json.hpp>
 
 #include "flowform/core/InputError.hpp"
@@ -20,6 +19,7 @@
 #include "flowform/optimization/DesignObjective.hpp"
 #include "flowform/optimization/DesignParameters.hpp"
 #include "flowform/optimization/DesignRuns.hpp"
+#include "flowform/optimization/DesignVectors.hpp"
 #include "flowform/optimization/OptimizationSettings.hpp"
 #include "flowform/optimization/TrustRegionSqp.hpp"
 
@@ -31,10 +31,6 @@ namespace {
 /// followed by one on a mesh made at its result: the moved mesh keeps the start's resolution, and
 /// so its discretization error (1.2 % of the drawing force from 14° to 7.8°, docs/optimization.md).
 constexpr double kRemeshDistance = 0.02;
-
-ROL::Ptr<ROL::StdVector<double>> stdVector(const std::vector<double>& v) {
-  return ROL::makePtr<ROL::StdVector<double>>(ROL::makePtr<std::vector<double>>(v));
-}
 
 /// ROL's parameters from the settings (ROL's own examples are the reference: packages/rol/example).
 Teuchos::ParameterList rolParameters(const OptimizationSettings& s) {
@@ -215,15 +211,19 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
     Teuchos::ParameterList rol = rolParameters(settings);
     std::ostringstream rolLog;
     ROL::Ptr<const ROL::AlgorithmState<double>> state;
-    if (!settings.isConstrained()) {
-      ROL::OptimizationProblem<double> problem(objective, z, bounds);
-      ROL::OptimizationSolver<double> solver(problem, rol);
+    // ROL's solve; a design that did not solve ends it (the record keeps what was solved).
+    auto solveWith = [&](auto& solver) {
       try {
         solver.solve(rolLog);
       } catch (const DesignNotSolved& e) {
         failure = e.what();
       }
       state = solver.getAlgorithmState();
+    };
+    if (!settings.isConstrained()) {
+      ROL::OptimizationProblem<double> problem(objective, z, bounds);
+      ROL::OptimizationSolver<double> solver(problem, rol);
+      solveWith(solver);
     } else if (settings.constraintAlgorithm == "Trust Region SQP") {
       constraint = ROL::makePtr<DesignConstraint>(settings, runs, *objective);
       auto sqpState = ROL::makePtr<ROL::AlgorithmState<double>>();
@@ -249,12 +249,7 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
                              constraintBounds);
       problem->finalize(false, false);
       ROL::Solver<double> solver(problem, rol);
-      try {
-        solver.solve(rolLog);
-      } catch (const DesignNotSolved& e) {
-        failure = e.what();
-      }
-      state = solver.getAlgorithmState();
+      solveWith(solver);
     }
     log() << rolLog.str();
     if (!runs.history().empty()) scale = objective->scale();

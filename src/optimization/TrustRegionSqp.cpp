@@ -5,11 +5,11 @@
 #include <iomanip>
 #include <sstream>
 
-#include <ROL_StdVector.hpp>
 #include <ROL_Types.hpp>
 
 #include "flowform/optimization/DenseQp.hpp"
 #include "flowform/optimization/DesignRuns.hpp"
+#include "flowform/optimization/DesignVectors.hpp"
 
 namespace flowform {
 
@@ -22,14 +22,6 @@ using Matrix = std::vector<std::vector<double>>;
 constexpr double kAccept = 0.1, kPoor = 0.25, kGood = 0.75;
 /// ρ at most (scaled units: the objective ≈ 1 at the start, the constraints ≈ 1 at their bounds).
 constexpr double kMaxPenalty = 1e8;
-
-const std::vector<double>& entries(const ROL::Vector<double>& v) {
-  return *dynamic_cast<const ROL::StdVector<double>&>(v).getVector();
-}
-std::vector<double>& entries(ROL::Vector<double>& v) { return *dynamic_cast<ROL::StdVector<double>&>(v).getVector(); }
-ROL::Ptr<ROL::StdVector<double>> stdVector(const std::vector<double>& v) {
-  return ROL::makePtr<ROL::StdVector<double>>(ROL::makePtr<std::vector<double>>(v));
-}
 
 double dot(const std::vector<double>& a, const std::vector<double>& b) {
   double s = 0.0;
@@ -196,31 +188,16 @@ std::vector<double> multipliers(const Linearization& L, const std::vector<double
   for (std::size_t j = 0; j < n; ++j)
     if (z[j] > 1e-9 && z[j] < 1.0 - 1e-9) free.push_back(j);
   std::vector<double> lambda(m, 0.0);
+  if (active.empty() || free.empty()) return lambda;
   const std::size_t k = active.size();
-  if (k == 0 || free.empty()) return lambda;
-  Matrix N(k, std::vector<double>(k + 1, 0.0));  // [AᵀA | −Aᵀg] on the free components
+  Matrix N(k, std::vector<double>(k, 0.0));  // AᵀA x = −Aᵀg on the free components
+  std::vector<double> x(k, 0.0);
   for (std::size_t a = 0; a < k; ++a) {
     for (std::size_t b = 0; b < k; ++b)
       for (std::size_t j : free) N[a][b] += L.A[active[a]][j] * L.A[active[b]][j];
-    for (std::size_t j : free) N[a][k] -= L.A[active[a]][j] * L.g[j];
+    for (std::size_t j : free) x[a] -= L.A[active[a]][j] * L.g[j];
   }
-  for (std::size_t p = 0; p < k; ++p) {  // Gaussian elimination with partial pivoting
-    std::size_t pivot = p;
-    for (std::size_t r = p + 1; r < k; ++r)
-      if (std::abs(N[r][p]) > std::abs(N[pivot][p])) pivot = r;
-    std::swap(N[p], N[pivot]);
-    if (std::abs(N[p][p]) < 1e-300) return lambda;
-    for (std::size_t r = p + 1; r < k; ++r) {
-      const double f = N[r][p] / N[p][p];
-      for (std::size_t c = p; c <= k; ++c) N[r][c] -= f * N[p][c];
-    }
-  }
-  std::vector<double> x(k, 0.0);
-  for (std::size_t p = k; p-- > 0;) {
-    double v = N[p][k];
-    for (std::size_t c = p + 1; c < k; ++c) v -= N[p][c] * x[c];
-    x[p] = v / N[p][p];
-  }
+  if (!choleskySolve(N, x)) return lambda;  // dependent active constraints: no unique multipliers
   for (std::size_t a = 0; a < k; ++a) lambda[active[a]] = x[a];
   return lambda;
 }

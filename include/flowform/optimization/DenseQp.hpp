@@ -21,6 +21,10 @@ struct DenseQpResult {
   int iterations = 0;
 };
 
+/// Solves M y = b in place (M symmetric positive definite, small) by Cholesky; false (b untouched)
+/// when M is not positive definite to 10⁻¹⁵ of its largest diagonal entry.
+bool choleskySolve(std::vector<std::vector<double>> M, std::vector<double>& b);
+
 /// Solves the QP (H: n × n, G: rows × n); converged when the residuals and the duality gap are
 /// below `tolerance` relative to the data.
 DenseQpResult solveDenseQp(const std::vector<std::vector<double>>& H, const std::vector<double>& f,
