@@ -355,6 +355,7 @@ void ContactWall::refreshGeometry(const Mesh& mesh) {
   }
   if (m_settings.releasedFreeSurface && !m_toolNormals.empty()) m_curve.normals = m_toolNormals;
   m_cornerNormals.assign(m_curve.nodes.size(), {});
+  m_normalHeld.assign(m_curve.nodes.size(), 0);
   m_cornerSpeeds.assign(m_curve.nodes.size(), {});
   // The tool's surface velocity at each node, split along the node's normal and tangent (all 0
   // for a fixed tool, so that its relative velocities are the material's, bit for bit).

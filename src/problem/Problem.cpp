@@ -56,6 +56,7 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   m_responses->checkTemperatureField(thermal);
   m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings, fields);
   m_bcs = std::make_unique<BoundaryConditions>(bcList, m_mesh, *m_dofMap);
+  markHeldNormals();
   m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
   if (thermal) m_physics.thermal = ThermalProperties::fromParameters(material.sublist("Thermal"));
   m_assembler->setPhysics(m_physics);
@@ -153,7 +154,7 @@ void Problem::startFrom(const Problem& other, bool decideZoneLimits, bool carryS
       moveNodes(m_madeCoords);
     }
   }
-  if (!other.m_bcs->releasedGroups().empty()) m_bcs->releaseHeld(m_mesh);
+  if (!other.m_bcs->releasedGroups().empty() && m_bcs->releaseHeld(m_mesh)) markHeldNormals();
   // A rigid inflow starts at the speed the other mesh found.
   if (!m_bcs->rigidInflow().group.empty()) m_bcs->setRigidInflowSpeed(m_mesh, other.m_bcs->rigidInflow().speed);
   interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap,
@@ -178,8 +179,24 @@ void Problem::moveNodes(const std::vector<std::array<double, 2>>& coords) {
   for (ContactWall& wall : m_walls) wall.refreshGeometry(m_mesh);
   markConvexToolCorners(m_walls);
   m_bcs->refreshGeometry(m_mesh);
+  markHeldNormals();
   m_bcs->imposeOnSolution(*m_solution);  // symmetry directions may have turned
   m_model->invalidateJacobian();
+}
+
+void Problem::markHeldNormals() {
+  // A single velocity condition along the wall's normal (|a·n| = 1: a Parallel To the wall, or a
+  // prescribed component normal to it) holds the node's normal velocity (ContactWall::setNormalHeld).
+  const std::vector<NodeConstraint>& constraints = m_bcs->constraints();
+  for (ContactWall& wall : m_walls)
+    for (int k = 0; k < wall.numNodes(); ++k) {
+      const LO n = m_dofMap->overlapIndex(wall.curve().nodes[k]);
+      if (n < 0) continue;
+      const NodeConstraint& c = constraints[n];
+      const auto& normal = wall.curve().normals[k];
+      wall.setNormalHeld(k, c.kind == NodeConstraint::Kind::Single &&
+                                std::abs(c.a[0] * normal[0] + c.a[1] * normal[1]) > 1.0 - 1e-9);
+    }
 }
 
 void Problem::moveShape(const std::vector<std::array<double, 2>>& madeCoords,

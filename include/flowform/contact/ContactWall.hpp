@@ -190,6 +190,16 @@ class ContactWall {
     m_cornerSpeeds[k].push_back(otherSpeed);
     if (m_settings.closedCorners) m_active[k] = kActive;
   }
+  /// Node k's normal velocity is held by a velocity condition of another group (its normal
+  /// component prescribed: a `Parallel To` the wall, as the cutting scene's chip outlet at the rake's
+  /// top, or both components): the normal force there is that condition's reaction, and the
+  /// penalty's normal force, α_n (u − v_w)·n, is exactly 0 (u·n is the condition's value). The
+  /// friction laws on the contact force see it as 0 (no friction), not as the round-off sign of a
+  /// held product, which flipped the node's branch under any move and made the DDM's mesh
+  /// partials straddle the kink of max(·, 0) (docs/sensitivity.md "Shape parameters"). Set by
+  /// Problem::markHeldNormals() whenever the conditions or the geometry change.
+  void setNormalHeld(int k, bool held) { m_normalHeld[k] = held ? 1 : 0; }
+  bool normalHeld(int k) const { return m_normalHeld[k] != 0; }
   /// Whether node k is held active (no status change): at a closed convex corner, or, on a wall
   /// whose released nodes are a free surface, its upstream end when no other wall meets it there
   /// (the fixed start of the surface where the material divides: a cutting tool's tip; at a tool
@@ -395,6 +405,7 @@ class ContactWall {
   bool m_complementarity = false;
   std::vector<int> m_changes;
   std::vector<std::vector<std::array<double, 2>>> m_cornerNormals;
+  std::vector<char> m_normalHeld;  ///< setNormalHeld
   std::vector<std::vector<double>> m_cornerSpeeds;  ///< the other tool's v_w·n, per corner normal
   /// The tool's surface velocity at each node and its normal and tangential components.
   std::vector<std::array<double, 2>> m_wallVelocity;
@@ -515,7 +526,7 @@ Scalar ContactWall::tangentialForce(int k, const FrictionParameters<PScalar>& fp
   if (m_settings.coulombOnContactForce || m_active[k] == kSelfDeciding) {
     // N_k = max(α_n (u − v_w)·n, 0): the penalty's normal force on the node (its normal traction, lumped).
     const Scalar normalForce = m_settings.normalPenalty * m_viscosity[k] * weight(k) * un;
-    d.pressureIntegral = normalForce > 0.0 ? normalForce : Scalar(0.0);
+    d.pressureIntegral = normalForce > 0.0 && !m_normalHeld[k] ? normalForce : Scalar(0.0);
   }
   FrictionParameters<PScalar> atNode = fp;  // ν of a Friction Field at node k
   atNode.frictionCoefficient = nodeFrictionCoefficient(k, fp);

@@ -217,6 +217,9 @@ class Problem {
   const RigidInflowReport& rigidInflowReport() const { return m_rigidInflowReport; }
 
  private:
+  /// The wall nodes whose normal velocity a velocity condition holds (ContactWall::setNormalHeld):
+  /// after the conditions are built and after every move.
+  void markHeldNormals();
   /// Penalty scales of every wall from the state x.
   void updateWallScales(const Vector& x);
   /// The Temperature field's start (constructor): the law's reference temperature or the mean
