@@ -3,8 +3,13 @@
 # with its Gauss-Newton interval (optimization_checks.py).
 add_test(NAME optimization_checks
          COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/optimization_checks.py
-                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/optimization)
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/optimization --part drawing)
 set_tests_properties(optimization_checks PROPERTIES LABELS "regression")
+# The roll's friction coefficient from a roll force and a forward slip (the rolling scene).
+add_test(NAME optimization_checks_rolling
+         COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/optimization_checks.py
+                 $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/optimization --part rolling)
+set_tests_properties(optimization_checks_rolling PROPERTIES LABELS "regression")
 # A bad Optimization sublist: exit 2 before any solve, naming the entry.
 set(FLOWFORM_OPT_CASE ../../../xml/drawing_identify_friction.xml)
 flowform_exit_test(bad_input_optimization_bounds_count CASE ${FLOWFORM_OPT_CASE}

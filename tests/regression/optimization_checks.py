@@ -27,7 +27,13 @@ made at a hidden ν = 0.0731, σ0 = 0.2 with noise:
   negative (measured −0.81): a stronger wire with less friction draws with nearly the same force,
   the die pressure tells them apart.
 
-usage: optimization_checks.py FLOWFORM SOURCE_DIR OUTDIR
+xml/rolling_identify_friction.xml (--part rolling, ctest optimization_checks_rolling) — the roll's
+ν from a roll force 4.143 ± 0.02 and a forward slip 0.0428 ± 0.002 made at a hidden ν = 0.17 with
+noise, through the free strip surfaces: the hidden ν inside the 95 % interval; the standard error
+against independent slopes at ν* ± 0.01 to 3 % (the slopes' curvature over ± 0.01 and the free
+surfaces' tolerance over the step); the misfit larger at ν* ± 0.01.
+
+usage: optimization_checks.py FLOWFORM SOURCE_DIR OUTDIR [--part drawing|rolling|all]
 """
 import math
 import os
@@ -62,9 +68,48 @@ def parabola_vertex(xs, ys):
     return -b / (2 * a)
 
 
+def friction_identified(run, case, base, walls, measured, hidden, step, tolerance, label="ν"):
+    """A friction coefficient identified from measurements (`case`, a misfit over Friction
+    Coefficient) against runs of `base` the optimizer did not make: the hidden ν inside the 95 %
+    interval; the standard error equal to 1/sqrt(Σ (s_i/σ_i)²) with slopes s_i from independent runs
+    at ν* ± step (central differences) to `tolerance`; the misfit at both larger than at ν*.
+    The number of failed checks."""
+    failed = 0
+    o = run(case.replace(".xml", ""), case)["optimization"]
+    nu = o["design"]["Friction Coefficient"]
+    low, high = o["confidence_95"]["Friction Coefficient"]
+    failed += check(o["converged"] and low <= hidden <= high,
+                    f"{label} = {nu:.5f}, 95 % interval [{low:.5f}, {high:.5f}] holds the hidden {hidden} "
+                    f"({o['status']}, {o['solves']} solves)")
+    sides = []
+    for sign in (1, -1):
+        sets = [f"Boundary Conditions/{w}/Friction Coefficient={nu + sign * step}" for w in walls]
+        sides.append(run(f"{base.replace('.xml', '')}_nu_{'plus' if sign > 0 else 'minus'}", base,
+                         sets + ["Sensitivity/Parameters={}", "Error Estimation/Method=None"])["functionals"])
+    information = 0.0
+    for name, (value, error) in measured.items():
+        slope = (sides[0][name] - sides[1][name]) / (2 * step)
+        information += (slope / error) ** 2
+    expected = 1.0 / math.sqrt(information)
+    reported = o["standard_error"]["Friction Coefficient"]
+    rel = abs(reported - expected) / expected
+    failed += check(rel <= tolerance, f"standard error {reported:.6g} = Gauss–Newton's from independent slopes "
+                                      f"{expected:.6g} ({rel:.1e} <= {tolerance})")
+
+    def misfit(functionals):
+        return sum(0.5 * ((functionals[n] - v) / e) ** 2 for n, (v, e) in measured.items())
+    j = o["objective"]
+    failed += check(misfit(sides[0]) > j and misfit(sides[1]) > j,
+                    f"the misfit {j:.5f} at ν* below its values at ν* ± {step}: {misfit(sides[0]):.5f}, "
+                    f"{misfit(sides[1]):.5f}")
+    return failed
+
+
 def main():
     flowform, source, outdir = sys.argv[1], os.path.abspath(sys.argv[2]), sys.argv[3]
-    failed = 0
+    part = sys.argv[5] if len(sys.argv) > 5 and sys.argv[4] == "--part" else "all"
+    if part not in ("drawing", "rolling", "all"):
+        sys.exit(f"--part {part}: expected drawing, rolling or all")
 
     def run(name, case, sets=()):
         r = launcher.run(flowform, os.path.join(source, "xml", case), os.path.join(outdir, name), list(sets),
@@ -73,6 +118,19 @@ def main():
             raise SystemExit(f"flowform exited {r.status} on {case} {list(sets)}")
         return r.summary
 
+    failed = 0
+    if part in ("drawing", "all"):
+        failed += drawing(run)
+    if part in ("rolling", "all"):
+        # The roll's friction from a roll force and a forward slip made at a hidden ν = 0.17.
+        failed += friction_identified(run, "rolling_identify_friction.xml", "rolling.xml", ("roll",),
+                                      {"roll_force": (4.143, 0.02), "forward_slip": (0.0428, 0.002)}, 0.17, 0.01, 0.03)
+    return verdict(failed)
+
+
+def drawing(run):
+    """The drawing decisions (the module's first three parts); the number of failed checks."""
+    failed = 0
     # The optimal die angle.
     optimum = run("optimal_angle", "drawing_optimal_angle.xml")
     o = optimum["optimization"]
@@ -95,35 +153,8 @@ def main():
                     f"the upper bound's optimum {bound:.2f}° lies above the optimizer's by {bound - alpha:.2f}° (<= 3°)")
 
     # The friction coefficient from measurements.
-    identified = run("identify_friction", "drawing_identify_friction.xml")
-    o = identified["optimization"]
-    nu = o["design"]["Friction Coefficient"]
-    low, high = o["confidence_95"]["Friction Coefficient"]
-    failed += check(o["converged"] and low <= HIDDEN_NU <= high,
-                    f"ν = {nu:.5f}, 95 % interval [{low:.5f}, {high:.5f}] holds the hidden {HIDDEN_NU} "
-                    f"({o['status']}, {o['solves']} solves)")
-    step = 3e-3
-    sides = []
-    for sign in (1, -1):
-        sets = [f"Boundary Conditions/{w}/Friction Coefficient={nu + sign * step}" for w in ("die_cone", "die_land")]
-        sides.append(run(f"nu_{'plus' if sign > 0 else 'minus'}", "drawing.xml",
-                         sets + ["Sensitivity/Parameters={}"])["functionals"])
-    information = 0.0
-    for name, (value, error) in MEASURED.items():
-        slope = (sides[0][name] - sides[1][name]) / (2 * step)
-        information += (slope / error) ** 2
-    expected = 1.0 / math.sqrt(information)
-    reported = o["standard_error"]["Friction Coefficient"]
-    rel = abs(reported - expected) / expected
-    failed += check(rel <= 0.02, f"standard error {reported:.6g} = Gauss–Newton's from independent slopes "
-                                 f"{expected:.6g} ({rel:.1e} <= 0.02)")
-
-    def misfit(functionals):
-        return sum(0.5 * ((functionals[n] - v) / e) ** 2 for n, (v, e) in MEASURED.items())
-    j = o["objective"]
-    failed += check(misfit(sides[0]) > j and misfit(sides[1]) > j,
-                    f"the misfit {j:.5f} at ν* below its values at ν* ± {step}: {misfit(sides[0]):.5f}, "
-                    f"{misfit(sides[1]):.5f}")
+    failed += friction_identified(run, "drawing_identify_friction.xml", "drawing.xml", ("die_cone", "die_land"),
+                                  MEASURED, HIDDEN_NU, 3e-3, 0.02)
 
     # Two parameters from two measurements.
     two = run("identify_two", "drawing_identify_two.xml")["optimization"]
@@ -159,7 +190,7 @@ def main():
     failed += check(rel <= 0.02 and abs(rc - corr) <= 0.02 and rc < 0,
                     f"standard errors {reported[0]:.5g}, {reported[1]:.5g} = Gauss–Newton's from independent slopes "
                     f"{expected[0]:.5g}, {expected[1]:.5g} ({rel:.1e} <= 0.02); correlation {rc:.3f} = {corr:.3f} < 0")
-    return verdict(failed)
+    return failed
 
 
 if __name__ == "__main__":
