@@ -41,15 +41,19 @@ TEUCHOS_UNIT_TEST(DenseQp, ProjectionOntoAHalfPlane) {
   TEST_FLOATING_EQUALITY(r.z.back(), 1.0, 1e-8);
 }
 
-TEUCHOS_UNIT_TEST(DenseQp, LinearProgramAtAVertex) {
-  // min −x1 − 2 x2 s.t. x1 + x2 <= 1.5 in [0, 1]²: x* = (0.5, 1).
-  const Matrix H = {{0, 0}, {0, 0}};
+/// min fᵀx s.t. x1 + x2 <= cut in [0, 1]² (a linear program).
+flowform::DenseQpResult unitSquareLp(const std::vector<double>& f, double cut) {
   Matrix G;
-  std::vector<double> f = {-1, -2}, h;
+  std::vector<double> h;
   box(G, h, 2, 0, 1);
   G.push_back({1, 1});
-  h.push_back(1.5);
-  const auto r = solveDenseQp(H, f, G, h);
+  h.push_back(cut);
+  return solveDenseQp(Matrix{{0, 0}, {0, 0}}, f, G, h);
+}
+
+TEUCHOS_UNIT_TEST(DenseQp, LinearProgramAtAVertex) {
+  // min −x1 − 2 x2 s.t. x1 + x2 <= 1.5 in [0, 1]²: x* = (0.5, 1).
+  const auto r = unitSquareLp({-1, -2}, 1.5);
   TEST_ASSERT(r.converged);
   TEST_FLOATING_EQUALITY(r.x[0], 0.5, 1e-8);
   TEST_FLOATING_EQUALITY(r.x[1], 1.0, 1e-8);
@@ -57,13 +61,7 @@ TEUCHOS_UNIT_TEST(DenseQp, LinearProgramAtAVertex) {
 
 TEUCHOS_UNIT_TEST(DenseQp, DegenerateLinearProgram) {
   // min −x1 − x2 s.t. x1 + x2 <= 1 in [0, 1]²: the whole edge is optimal, value −1.
-  const Matrix H = {{0, 0}, {0, 0}};
-  Matrix G;
-  std::vector<double> f = {-1, -1}, h;
-  box(G, h, 2, 0, 1);
-  G.push_back({1, 1});
-  h.push_back(1.0);
-  const auto r = solveDenseQp(H, f, G, h);
+  const auto r = unitSquareLp({-1, -1}, 1.0);
   TEST_ASSERT(r.converged);
   TEST_FLOATING_EQUALITY(r.x[0] + r.x[1], 1.0, 1e-8);
   TEST_COMPARE(r.x[0], >=, -1e-8);
