@@ -216,11 +216,13 @@ SqpResult runTrustRegionSqp(DesignObjective& objective, DesignConstraint& constr
   double radius = std::min(settings.initialRadius, 1.0), rho = 1.0;
   const Matrix zero(n, std::vector<double>(n, 0.0));
   out << "optimization: SQP  iter  objective        violation   criticality  radius     penalty  ratio\n";
-  auto report = [&](int k, double lastRatio) {
-    out << "optimization: SQP  " << std::setw(4) << k << "  " << std::setw(15) << std::setprecision(9) << L.J << "  "
-        << std::setw(10) << std::setprecision(3) << violation(L.c, lo, hi) << "  " << std::setw(11)
-        << result.criticality << "  " << std::setw(9) << radius << "  " << std::setw(7) << rho << "  " << lastRatio
-        << "\n";
+  auto report = [&](int k, double lastRatio) {  // formatted apart: the log keeps its own precision
+    std::ostringstream line;
+    line << "optimization: SQP  " << std::setw(4) << k << "  " << std::setw(15) << std::setprecision(9) << L.J << "  "
+         << std::setw(10) << std::setprecision(3) << violation(L.c, lo, hi) << "  " << std::setw(11)
+         << result.criticality << "  " << std::setw(9) << radius << "  " << std::setw(7) << rho << "  " << lastRatio
+         << "\n";
+    out << line.str();
   };
   double ratio = 0.0;  // of the step that led to the iterate reported
   for (int k = 0;; ++k) {
