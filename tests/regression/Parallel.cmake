@@ -120,6 +120,9 @@ flowform_parallel_equals_serial(drawing_identify_friction drawing_identify_frict
 # their owners), the reactions' part by J_uncᵀ, the transposed solve distributed; inside the
 # optimizer with a friction field (the same solves and designs either way).
 flowform_parallel_equals_serial(extrusion_identify_friction_field extrusion_identify_friction_field.xml)
+# The constrained optimizer on 2 ranks: every rank runs the SQP on the same (reduced) responses and
+# derivatives, so the ranks take the same steps; the same solves and design as on one.
+flowform_parallel_equals_serial(hot_extrusion_window hot_extrusion_window.xml)
 flowform_parallel_equals_serial(adjoint_extrusion extrusion.xml --set "Adaptivity/Enabled=false"
                                 --set "Sensitivity/Method=Adjoint"
                                 --set "Sensitivity/Parameters={Friction Coefficient:container, Yield Stress}"
