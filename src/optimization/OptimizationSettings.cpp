@@ -46,9 +46,10 @@ void buildOptimizationParameters(const ValidList& valid) {
              inRange(1e-12, 1.0));
   Teuchos::setStringToIntegralParameter<int>(
       "Constraint Algorithm", "Trust Region SQP",
-      "with Constrained Responses: Trust Region SQP (an S-l1-QP, one solve per iteration, its subproblems solved "
-      "by ROL, docs/optimization.md section 1), or one of ROL's own algorithms for general constraints (each of "
-      "their subproblems solved by the Algorithm on the design's bounds; many more solves)",
+      "with Constrained Responses: Trust Region SQP (an S-l1-QP, one solve per iteration, its subproblems dense QPs "
+      "that need no solve, docs/optimization.md section 1.1), or one of ROL's own algorithms for general "
+      "constraints (each of their subproblems solved by the Algorithm on the design's bounds; on the shipped "
+      "decisions they took many more solves and stopped infeasible)",
       Teuchos::tuple<std::string>("Trust Region SQP", "Augmented Lagrangian", "Stabilized LCL", "Moreau-Yosida",
                                   "Interior Point"),
       valid.get());
