@@ -9,16 +9,17 @@
 //   q(d) = ∇J·d + ½ dᵀ B d + ρ Σ_i viol_i(c + A d),   max(−z, −Δ) <= d <= min(1 − z, Δ),
 //
 // (B: the misfit's Gauss–Newton Hessian, or a damped BFGS of the objective's gradients from B = 0),
-// written with elastic variables p, q >= 0 (l <= c + A d + p − q <= u, ρ Σ (p + q)) as a smooth
-// problem with linear constraints that ROL solves (TypeG augmented Lagrangian: the model costs no
-// solve). The step is taken when the merit falls by at least 10 % of the model's prediction; the
-// radius Δ grows after good steps and shrinks after poor ones (or a design that did not solve).
-// ρ is raised tenfold while that lowers the model's linearized violation (steering). Converged when
-// the linearized merit's decrease over a unit box, χ (a first-order stationarity measure of the ℓ1
+// written with elastic variables p, q >= 0 (l <= c + A d + p − q <= u, ρ Σ (p + q)) as a small
+// dense convex QP (DenseQp: an interior-point method; no solve of the case). The step is taken
+// when the merit falls by at least 10 % of the model's prediction; the radius Δ grows after good
+// steps and shrinks after poor ones (or a design that did not solve). ρ is raised tenfold while
+// that lowers the model's linearized violation (steering). Converged when the linearized merit's
+// decrease over a unit box, χ (a first-order stationarity measure of the ℓ1
 // merit: 0 at a KKT point with ρ above the multipliers), is below the gradient tolerance and the
 // constraints hold to their tolerance. ROL's own general-constraint algorithms (augmented
-// Lagrangian, stabilized LCL, Moreau–Yosida) remain selectable; on the shipped decisions they took
-// 35–60 solves and stopped infeasible (docs/optimization.md §1).
+// Lagrangian, stabilized LCL, Moreau–Yosida) remain selectable; on the shipped decisions they
+// stopped infeasible or took 36–551 solves (docs/BENCHMARKS.md §21.1); ROL's augmented Lagrangian
+// also stalled on the QP below, hence DenseQp.
 #pragma once
 
 #include <ostream>
