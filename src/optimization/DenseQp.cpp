@@ -17,14 +17,14 @@ double maxAbs(const std::vector<double>& v) {
 
 }  // namespace
 
-bool choleskySolve(Matrix M, std::vector<double>& b) {
+bool choleskySolve(Matrix M, std::vector<double>& b, double relativePivot) {
   const std::size_t n = b.size();
   double largest = 0.0;
   for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, std::abs(M[i][i]));
   for (std::size_t j = 0; j < n; ++j) {
     double d = M[j][j];
     for (std::size_t k = 0; k < j; ++k) d -= M[j][k] * M[j][k];
-    if (!(d > 1e-300 + 1e-15 * largest)) return false;
+    if (!(d > 1e-300 + relativePivot * largest)) return false;
     M[j][j] = std::sqrt(d);
     for (std::size_t i = j + 1; i < n; ++i) {
       double v = M[i][j];

@@ -15,6 +15,7 @@
 
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/Log.hpp"
+#include "flowform/optimization/DenseQp.hpp"
 #include "flowform/optimization/DesignConstraint.hpp"
 #include "flowform/optimization/DesignObjective.hpp"
 #include "flowform/optimization/DesignParameters.hpp"
@@ -123,35 +124,14 @@ nlohmann::json resolution(const std::vector<std::vector<double>>& A, const Optim
 /// (AᵀA)⁻¹ by Cholesky (n small: the design's size); empty when AᵀA is not positive definite
 /// (the data do not determine every design parameter).
 std::vector<std::vector<double>> gaussNewtonCovariance(const std::vector<std::vector<double>>& A, std::size_t n) {
-  std::vector<std::vector<double>> M(n, std::vector<double>(n, 0.0)), L = M, inv = M;
+  std::vector<std::vector<double>> M(n, std::vector<double>(n, 0.0)), inv = M;
   for (const auto& row : A)
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < n; ++j) M[i][j] += row[i] * row[j];
-  double largest = 0.0;
-  for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, M[i][i]);
-  for (std::size_t j = 0; j < n; ++j) {
-    double d = M[j][j];
-    for (std::size_t k = 0; k < j; ++k) d -= L[j][k] * L[j][k];
-    if (!(d > 1e-12 * largest)) return {};
-    L[j][j] = std::sqrt(d);
-    for (std::size_t i = j + 1; i < n; ++i) {
-      double v = M[i][j];
-      for (std::size_t k = 0; k < j; ++k) v -= L[i][k] * L[j][k];
-      L[i][j] = v / L[j][j];
-    }
-  }
-  for (std::size_t c = 0; c < n; ++c) {  // solve L Lᵀ x = e_c
-    std::vector<double> y(n, 0.0), x(n, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-      double v = i == c ? 1.0 : 0.0;
-      for (std::size_t k = 0; k < i; ++k) v -= L[i][k] * y[k];
-      y[i] = v / L[i][i];
-    }
-    for (std::size_t i = n; i-- > 0;) {
-      double v = y[i];
-      for (std::size_t k = i + 1; k < n; ++k) v -= L[k][i] * x[k];
-      x[i] = v / L[i][i];
-    }
+  for (std::size_t c = 0; c < n; ++c) {  // column c: M x = e_c
+    std::vector<double> x(n, 0.0);
+    x[c] = 1.0;
+    if (!choleskySolve(M, x, 1e-12)) return {};
     for (std::size_t i = 0; i < n; ++i) inv[i][c] = x[i];
   }
   return inv;
@@ -220,12 +200,12 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
       }
       state = solver.getAlgorithmState();
     };
-    if (!settings.isConstrained()) {
+    if (settings.isConstrained()) constraint = ROL::makePtr<DesignConstraint>(settings, runs, *objective);
+    if (!constraint) {
       ROL::OptimizationProblem<double> problem(objective, z, bounds);
       ROL::OptimizationSolver<double> solver(problem, rol);
       solveWith(solver);
     } else if (settings.constraintAlgorithm == "Trust Region SQP") {
-      constraint = ROL::makePtr<DesignConstraint>(settings, runs, *objective);
       auto sqpState = ROL::makePtr<ROL::AlgorithmState<double>>();
       try {
         const SqpResult sqp = runTrustRegionSqp(*objective, *constraint, *z->getVector(), settings, log());
@@ -241,7 +221,6 @@ int runOptimization(const Teuchos::ParameterList& caseParams, const CaseRunFacto
       }
       state = sqpState;
     } else {
-      constraint = ROL::makePtr<DesignConstraint>(settings, runs, *objective);
       auto problem = ROL::makePtr<ROL::Problem<double>>(objective, z);
       problem->addBoundConstraint(bounds);
       const ROL::Ptr<ROL::BoundConstraint<double>> constraintBounds = constraint->bounds();

@@ -117,8 +117,8 @@ ModelStep solveModel(const Linearization& L, const Matrix& B, double rho, const 
     for (std::size_t j = 0; j < n; ++j) a[j] = L.A[i][j];
     a[n + i] = 1.0;
     a[n + m + i] = -1.0;
-    if (std::isfinite(hi[i]) && hi[i] < ROL::ROL_INF<double>()) row(a, hi[i] - L.c[i]);
-    if (std::isfinite(lo[i]) && lo[i] > ROL::ROL_NINF<double>()) {
+    if (hi[i] < ROL::ROL_INF<double>()) row(a, hi[i] - L.c[i]);  // a side without a bound has no row
+    if (lo[i] > ROL::ROL_NINF<double>()) {
       for (double& v : a) v = -v;
       row(a, L.c[i] - lo[i]);
     }

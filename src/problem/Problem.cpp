@@ -154,7 +154,7 @@ void Problem::startFrom(const Problem& other, bool decideZoneLimits, bool carryS
       moveNodes(m_madeCoords);
     }
   }
-  if (!other.m_bcs->releasedGroups().empty() && m_bcs->releaseHeld(m_mesh)) markHeldNormals();
+  if (!other.m_bcs->releasedGroups().empty()) releaseHeldConditions();
   // A rigid inflow starts at the speed the other mesh found.
   if (!m_bcs->rigidInflow().group.empty()) m_bcs->setRigidInflowSpeed(m_mesh, other.m_bcs->rigidInflow().speed);
   interpolate(other.mesh(), other.dofMap(), replicate(other.solution(), other.dofMap()), m_mesh, *m_dofMap,
@@ -197,6 +197,12 @@ void Problem::markHeldNormals() {
       wall.setNormalHeld(k, c.kind == NodeConstraint::Kind::Single &&
                                 std::abs(c.a[0] * normal[0] + c.a[1] * normal[1]) > 1.0 - 1e-9);
     }
+}
+
+bool Problem::releaseHeldConditions() {
+  if (!m_bcs->releaseHeld(m_mesh)) return false;
+  markHeldNormals();
+  return true;
 }
 
 void Problem::moveShape(const std::vector<std::array<double, 2>>& madeCoords,

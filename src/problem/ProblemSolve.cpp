@@ -91,10 +91,7 @@ const SolveReport& Problem::solve() {
       loopFreeSurfaces(solver, {0, 0.0}, "after the Rigid Inflow's speed changed: ");
       m_freeSurfaceReport.continueFrom(earlier);
     }
-    if (m_report.converged && m_bcs->releaseHeld(m_mesh)) {
-      markHeldNormals();
-      releaseHeldAndGoOn(solver);
-    }
+    if (m_report.converged && releaseHeldConditions()) releaseHeldAndGoOn(solver);
   }
   return m_report;
 }

@@ -22,8 +22,8 @@ struct DenseQpResult {
 };
 
 /// Solves M y = b in place (M symmetric positive definite, small) by Cholesky; false (b untouched)
-/// when M is not positive definite to 10⁻¹⁵ of its largest diagonal entry.
-bool choleskySolve(std::vector<std::vector<double>> M, std::vector<double>& b);
+/// when a pivot falls to `relativePivot` of M's largest diagonal entry (M not positive definite).
+bool choleskySolve(std::vector<std::vector<double>> M, std::vector<double>& b, double relativePivot = 1e-15);
 
 /// Solves the QP (H: n × n, G: rows × n); converged when the residuals and the duality gap are
 /// below `tolerance` relative to the data.

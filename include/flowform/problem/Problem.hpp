@@ -218,8 +218,10 @@ class Problem {
 
  private:
   /// The wall nodes whose normal velocity a velocity condition holds (ContactWall::setNormalHeld):
-  /// after the conditions are built and after every move.
+  /// after the conditions are built, after every move and after a release (releaseHeldConditions).
   void markHeldNormals();
+  /// BoundaryConditions::releaseHeld and the held normals marked again; whether anything was released.
+  bool releaseHeldConditions();
   /// Penalty scales of every wall from the state x.
   void updateWallScales(const Vector& x);
   /// The Temperature field's start (constructor): the law's reference temperature or the mean
