@@ -138,6 +138,13 @@ NonlinearSolver Problem::newtonSolver(bool refreshScales) {
 }
 
 void Problem::startFrom(const Problem& other, bool decideZoneLimits, bool carryShapes) {
+  if (!m_warmStart) {  // this problem's own start, for the solve from scratch should this one fail
+    ColdStart cold;
+    cold.solution = Teuchos::rcp(new Vector(*m_solution, Teuchos::Copy));
+    for (const ContactWall& wall : m_walls) cold.walls.push_back(wall.state());
+    cold.rigidInflowSpeed = m_bcs->rigidInflow().speed;
+    m_coldStart = std::move(cold);
+  }
   // The other mesh's free surfaces moved: this mesh, as made, takes their shape first (carryShape),
   // and the groups it released after its first loop are released here from the start.
   if (carryShapes && other.m_mesh.coords != other.m_madeCoords) {
@@ -172,6 +179,20 @@ void Problem::startFrom(const Problem& other, bool decideZoneLimits, bool carryS
       }
   if (!m_walls.empty()) updateWallScales(*m_solution);
   m_warmStart = true;
+}
+
+void Problem::restoreColdStart() {
+  const ColdStart& cold = *m_coldStart;
+  Tpetra::deep_copy(*m_solution, *cold.solution);
+  for (size_t w = 0; w < m_walls.size(); ++w) {
+    m_walls[w].leaveComplementarity();
+    m_walls[w].restore(cold.walls[w]);
+  }
+  if (!m_bcs->rigidInflow().group.empty()) m_bcs->setRigidInflowSpeed(m_mesh, cold.rigidInflowSpeed);
+  m_bcs->imposeOnSolution(*m_solution);
+  m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
+  m_model->invalidateJacobian();
+  m_warmStart = false;
 }
 
 void Problem::moveNodes(const std::vector<std::array<double, 2>>& coords) {

@@ -24,19 +24,21 @@ const SolveReport& Problem::solve() {
   // at rest (FrictionSettings::stickAtRest), then by continuation in the friction coefficients
   // (continueInFriction), then from frictionless walls with every halving the case allows
   // (docs/contact.md).
-  const Vector initial(*m_solution, Teuchos::Copy);
+  Vector initial(*m_solution, Teuchos::Copy);  // the starts below begin here
   // From another mesh's converged state the complementarity walls decide from the start.
   if (m_warmStart && m_statusLoop->complementarity())
     for (ContactWall& wall : m_walls) wall.enterComplementarity();
   const double caseMinimum = m_params.sublist("Solver").sublist("Continuation").get<double>("Minimum Step");
   const double firstMinimum = m_walls.empty() ? 0.0 : std::max(caseMinimum, std::ldexp(1.0, -kFirstTryHalvings));
-  // From another mesh's converged state (startFrom): Newton at the target from there; resolve()
-  // falls back to the predictor and the continuation itself if that fails.
+  // From another mesh's converged state (startFrom): Newton at the target from there, then the
+  // residual homotopy (NonlinearSolver::resolve).
   // With complementarity walls the first solve's state is only where their Newton starts: its
   // last stage stops at kLooseFirstSolve (enterComplementarity converges it tightly).
   const double looseTolerance = m_assembler->hasFrictionHeat() ? kLooseFirstSolveFrictionHeat : kLooseFirstSolve;
   const double loose = m_statusLoop->complementarity() && !m_walls.empty() ? looseTolerance : 0.0;
-  m_report = m_warmStart ? solver.resolve(*m_solution, m_physics)
+  NewtonOptions warm;
+  warm.predictorRestart = !m_coldStart.has_value();
+  m_report = m_warmStart ? solver.resolve(*m_solution, m_physics, warm)
                          : solver.solve(*m_solution, m_physics, firstMinimum, loose);
   // The complementarity Newton continues a converged first solve. Should it fail, and the status
   // loop's tight re-solve too (a loose first state that was no good start), the first solve
@@ -49,6 +51,22 @@ const SolveReport& Problem::solve() {
     looseStart = false;
   };
   complement();
+  // A warm start that fails (the other mesh's contact zones or branch not this mesh's: the
+  // extrusion at ν ≳ 1, docs/contact.md) gives way to this problem's own start: the solve a run
+  // from scratch on this mesh makes, with its restarts below.
+  if (!m_report.converged && m_warmStart && m_coldStart && !budgetWasSpent()) {
+    log() << "flowform: the start from the other mesh's state failed (" << m_report.message
+          << "); solving from this mesh's own start, as a run from scratch\n";
+    const int spent = m_report.newtonIterations;
+    restoreColdStart();
+    Tpetra::deep_copy(initial, *m_solution);
+    updateWallScales(*m_solution);
+    m_report = solver.solve(*m_solution, m_physics, firstMinimum, loose);
+    m_report.newtonIterations += spent;
+    m_report.restarts += 1;
+    looseStart = loose > 0.0;
+    complement();
+  }
   auto again = [&](bool stick, const char* how) {
     log() << "flowform: the first solve failed (" << m_report.message << "); solving again " << how << "\n";
     Tpetra::deep_copy(*m_solution, initial);

@@ -357,6 +357,11 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
     report.message = budgetMessage();
     return report;
   }
+  if (!options.predictorRestart) {
+    Tpetra::deep_copy(x, start);
+    report.message = "Newton and the residual homotopy did not converge from the start they were given";
+    return report;
+  }
   log() << "  re-solve failed; starting again from the Newtonian predictor\n";
   Tpetra::deep_copy(x, start);
   SolveReport full = solve(x, target);

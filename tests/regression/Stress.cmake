@@ -15,3 +15,16 @@ foreach(group channel extrusion rolling rolling_free grid)
   set_tests_properties(stress_${group} PROPERTIES LABELS "regression" TIMEOUT 900)
 endforeach()
 set_tests_properties(stress_grid stress_rolling_free PROPERTIES LABELS "slow" TIMEOUT 3600)
+
+# Friction far above the shear strength (Coulomb ν = 1, 2 on every wall of the extrusion;
+# tests/regression/high_friction_checks.py, docs/contact.md): a start carried from another mesh
+# that fails gives way to the mesh's own start. two_level: the refined solve of the estimate at
+# ν = 2 equals a run from scratch on the refined mesh; adaptive (slow): the shipped adaptivity at
+# ν = 1 and 2 converges and meets its target.
+foreach(part two_level adaptive)
+  add_test(NAME high_friction_${part}
+           COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/high_friction_checks.py ${part}
+                   $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/high_friction/${part})
+  set_tests_properties(high_friction_${part} PROPERTIES LABELS "regression" TIMEOUT 900)
+endforeach()
+set_tests_properties(high_friction_adaptive PROPERTIES LABELS "slow" TIMEOUT 3600)

@@ -85,8 +85,9 @@ class Problem {
   /// this mesh's nodes, its walls' statuses carried to this mesh's wall nodes
   /// (ContactWall::takeStatusesFrom; with `decideZoneLimits` a node inside an old zone limit is
   /// active if it penetrates at the interpolated state), the penalty scales from that state.
-  /// solve() then re-solves from there, without the continuation (it falls back to it only if
-  /// Newton fails).
+  /// solve() then re-solves from there, without the continuation; should that fail, it solves
+  /// again from this problem's own start, as a run from scratch on this mesh would
+  /// (restoreColdStart).
   /// `carryShapes` false: this mesh keeps its free surfaces as made (another domain's, e.g. a
   /// design whose shape parameter moved the tools: their shape would not fit this one).
   void startFrom(const Problem& other, bool decideZoneLimits = true, bool carryShapes = true);
@@ -244,6 +245,10 @@ class Problem {
   /// m_freeSurfaceReport, its Newton iterations and changes add to the solve's, and a failure makes
   /// the solve unconverged, `context` prefixed to its message.
   void loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart, const std::string& context);
+  /// Back to the start startFrom() replaced (m_coldStart): the solution, the walls' statuses out of
+  /// complementarity, the rigid inflow's speed, the case's contact strategy; the problem is no
+  /// longer warm-started. The free surfaces keep the carried shape.
+  void restoreColdStart();
 
   static constexpr int kFirstTryHalvings = 3;  ///< continuation halvings of the first start with walls
   Teuchos::ParameterList m_params;
@@ -263,6 +268,14 @@ class Problem {
   std::unique_ptr<FreeSurfaces> m_freeSurfaces;
   Teuchos::RCP<Vector> m_solution;
   bool m_warmStart = false;  ///< startFrom() gave the state: solve() re-solves from it
+  /// What startFrom() replaced: this problem's own start (solution, wall states, rigid-inflow
+  /// speed), for the solve from scratch when the warm start fails.
+  struct ColdStart {
+    Teuchos::RCP<Vector> solution;
+    std::vector<ContactWall::State> walls;
+    double rigidInflowSpeed = 0.0;
+  };
+  std::optional<ColdStart> m_coldStart;
   SolveReport m_report;
   int m_contactChanges = 0;
   FreeSurfaceReport m_freeSurfaceReport;

@@ -52,6 +52,9 @@ struct NewtonOptions {
   /// resolve(): false: a Newton that fails is reported as failed, with no restart from the
   /// predictor (the caller has a better fallback).
   bool restart = true;
+  /// resolve() with restart: false: once the residual homotopy fails too, the solve is reported
+  /// as failed instead of starting again from the predictor (the caller has its own start).
+  bool predictorRestart = true;
   /// resolve() of an uncapped, tight solve: first the simplified Newton iteration with the
   /// factors the model holds (an earlier Jacobian's: the state before a small change such as a
   /// free-surface move), x ← x − J_old⁻¹ F(x), while each step at least halves ||F||, to the same
