@@ -21,10 +21,13 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
   const auto start = std::chrono::steady_clock::now();
   Problem& fine = run.problem();
   const int refinements = fine.parameters().sublist("Mesh").get<int>("Uniform Refinements");
-  if (refinements < 1 || !fine.freeSurfaces().empty()) {
-    log() << "error estimate: " << (refinements < 1 ? "the mesh is not refined (Mesh/Uniform Refinements = 0): the "
-                                                      "Newton Step estimate"
-                                                    : "free surfaces: the two-level estimate")
+  // With free surfaces each level converges its own surfaces: the values compare, but the
+  // indicators, interpolated between meshes whose surfaces differ, would not (the header).
+  const bool surfaceIndicators = !fine.freeSurfaces().empty() && !indicatorResponses.empty();
+  if (refinements < 1 || surfaceIndicators) {
+    log() << "error estimate: "
+          << (refinements < 1 ? "the mesh is not refined (Mesh/Uniform Refinements = 0): the Newton Step estimate"
+                              : "indicators with free surfaces: the two-level estimate")
           << " instead of the coarser mesh's\n";
     ErrorEstimate other = refinements < 1 ? NewtonStepEstimate::estimate(run, makeRun, indicatorResponses, wanted)
                                           : TwoLevelEstimate::estimate(run, makeRun, indicatorResponses, wanted);
@@ -75,7 +78,9 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
   estimate.details["c2"] = c2;
   const ResponseDerivatives* sensitivities =
       coarser.front()->sensitivity().computed() ? &coarser.front()->sensitivity().responseDerivatives() : nullptr;
-  estimateFromOtherLevel(run, coarser.front()->functionals(), sensitivities, nullptr, c1, estimate);
+  const ResponseDerivatives* totalShape =
+      coarser.front()->shapeDerivative().computed ? &coarser.front()->shapeDerivative().responses : nullptr;
+  estimateFromOtherLevel(run, coarser.front()->functionals(), sensitivities, totalShape, c1, estimate);
   if (levels == 2) {  // + c2 D2 for every response and sensitivity both levels have
     const CaseRun& second = *coarser.back();
     for (auto& [name, eta] : estimate.functionals) {
@@ -84,15 +89,19 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
       eta += c2 * (at->second - coarser.front()->functionals().at(name));
       estimate.details["level_2_" + name] = at->second;
     }
-    if (sensitivities && second.sensitivity().computed()) {
-      const ResponseDerivatives& far = second.sensitivity().responseDerivatives();
-      for (auto& [name, byParameter] : estimate.sensitivities)
+    // + c2 D2 for each derivative both levels have (DDM on the frozen shape, total through the surfaces)
+    auto addSecondLevel = [&](const ResponseDerivatives& near, const ResponseDerivatives& far, ResponseDerivatives& etas) {
+      for (auto& [name, byParameter] : etas)
         for (auto& [parameter, eta] : byParameter) {
           const auto response = far.find(name);
           if (response == far.end() || !response->second.count(parameter)) continue;
-          eta += c2 * (response->second.at(parameter) - sensitivities->at(name).at(parameter));
+          eta += c2 * (response->second.at(parameter) - near.at(name).at(parameter));
         }
-    }
+    };
+    if (sensitivities && second.sensitivity().computed())
+      addSecondLevel(*sensitivities, second.sensitivity().responseDerivatives(), estimate.sensitivities);
+    if (totalShape && second.shapeDerivative().computed)
+      addSecondLevel(*totalShape, second.shapeDerivative().responses, estimate.sensitivitiesTotalShape);
   }
 
   if (!indicatorResponses.empty() && (!wanted || wanted(estimate))) {

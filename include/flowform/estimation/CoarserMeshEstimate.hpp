@@ -22,10 +22,13 @@
 // penalty residual took the indicators and the loop coarsened the bulk cycle after cycle); the
 // run's statuses are put back afterwards.
 //
-// Falls back to the Newton Step estimate on a mesh that is not refined (Uniform Refinements 0:
-// the adaptive loop's first cycle) and to the two-level one with free surfaces (the coarser
-// level's own free-surface loop moves its surface off the run's, where the indicators are
-// interpolated); error_estimation.details.coarser_mesh_fallback = 1 says so.
+// With free surfaces each coarser level converges its own surfaces from the run's shape
+// (Problem::startFrom carries it; a few updates) and the responses, frozen-shape and total
+// derivatives compare level to level as on a fixed domain (the die swell: effectivity 0.93–1.05,
+// docs/verification.md §11). Falls back to the Newton Step estimate on a mesh that is not refined
+// (Uniform Refinements 0: the adaptive loop's first cycle), and to the two-level one where a case
+// with free surfaces asks for indicators (the coarser level's surface is off the run's, where the
+// indicators are interpolated); error_estimation.details.coarser_mesh_fallback = 1 says so.
 #pragma once
 
 #include <string>
@@ -42,7 +45,7 @@ struct CoarserMeshEstimate {
       "the case solved again on the mesh one uniform refinement coarser than the run's (Mesh/Uniform Refinements >= "
       "1), from the run's solution: eta = (phi - phi_coarser) / (2^Order - 1), a quarter of the dofs; the adaptive "
       "loop then meshes every cycle after the first refined once; on an unrefined mesh the Newton Step estimate, "
-      "with free surfaces the two-level one";
+      "with free surfaces and adaptivity indicators the two-level one";
   /// The estimate of `run`'s converged responses (and sensitivities, when computed), with
   /// indicators for `indicatorResponses` on the coarser mesh. `run`'s model is refactored for
   /// the indicators (its solution and statuses are kept). When the coarser solve does not
