@@ -17,7 +17,7 @@ namespace flowform {
 
 namespace {
 
-/// C = ∫ ρc u·∇T dΩ over this rank's cells, on the kernels' quadrature (EnergyKernel's Galerkin
+/// C = ∫ ρc u·∇T dΩ over this rank's cells, on the kernels' quadrature (ThermoMechanicalKernel's Galerkin
 /// convection term tested with Σ_a N_a = 1).
 double convectedHeat(const Workset& x, const Mesh& mesh, const DofMap& dofMap, Geometry geometry, double rhoC) {
   const int components[3] = {kUx, kUy, dofMap.fields().component(kTemperatureField)};

@@ -9,9 +9,8 @@
 #include "flowform/discretization/SolutionTransfer.hpp"
 #include "flowform/freesurface/ReferenceTopology.hpp"
 #include "flowform/mesh/MeshReader.hpp"
-#include "flowform/physics/kernels/EnergyKernel.hpp"
 #include "flowform/physics/kernels/FlowKernel.hpp"
-#include "flowform/physics/kernels/ThermalFlowKernel.hpp"
+#include "flowform/physics/kernels/ThermoMechanicalKernel.hpp"
 #include "flowform/solvers/LinearSolverRegistry.hpp"
 
 namespace flowform {
@@ -62,10 +61,8 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   m_assembler->setPhysics(m_physics);
   std::optional<ThermalBoundaryConditions> thermalConditions;
   if (thermal) {
-    // A law with a temperature (Sellars–Tegart, Hensel–Spittel) reads the field: the flow kernel that does.
-    const auto flow = temperatureParameter(m_physics.material.law) >= 0 ? makeCellKernel(ThermalFlowKernel{}, fields)
-                                                                        : makeCellKernel(FlowKernel{}, fields);
-    m_assembler->setKernels({flow, makeCellKernel(EnergyKernel{}, fields)});
+    // The flow and the energy balance in one kernel (the law at each cell's temperature).
+    m_assembler->setKernels({makeCellKernel(ThermoMechanicalKernel{}, fields)});
     thermalConditions.emplace(applyThermalConditions());
   }
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);

@@ -285,10 +285,10 @@ void NonlinearSolver::checkPredictorTemperature(Vector& x, const Vector& start, 
 bool NonlinearSolver::isLinear(const FlowPhysics& physics) const {
   // A Newtonian material makes the bulk linear; the contact walls may not be (Coulomb's p⁺ and
   // sticking bound, complementarity's max): then Newton, even at n = 1.
-  // Another kernel (the energy balance: its convection u·∇T and heating s:D are not linear in u)
-  // makes it nonlinear too.
+  // A field besides the flow's (the temperature: its convection u·∇T and heating s:D are not
+  // linear in u) makes it nonlinear too.
   return isNewtonian(physics.material) && m_model.assembler().contactIsLinear() &&
-         m_model.assembler().kernels().size() == 1;
+         m_model.assembler().dofMap().fields().numComponents() == kNumFlowComponents;
 }
 
 SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const NewtonOptions& options) {

@@ -1,13 +1,13 @@
 // The material of one cell as the flow kernel sees it: with a Temperature field and a law that
 // depends on the temperature, the law at the cell's centroid temperature T_K (physics/kernels/
-// ThermalFlowKernel.hpp); otherwise the case's material. For what reads a solution cell by cell
+// ThermoMechanicalKernel.hpp); otherwise the case's material. For what reads a solution cell by cell
 // outside the kernels: the cell states (penalty scales, output fields) and the cell powers.
 #pragma once
 
 #include "flowform/assembly/EvaluationTypes.hpp"
 #include "flowform/discretization/CellGeometry.hpp"
 #include "flowform/discretization/DofMap.hpp"
-#include "flowform/physics/kernels/ThermalFlowKernel.hpp"
+#include "flowform/physics/kernels/ThermoMechanicalKernel.hpp"
 
 namespace flowform {
 

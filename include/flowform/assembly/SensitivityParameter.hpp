@@ -14,7 +14,7 @@
 //                                       case's .geo (a die angle, a roll radius); it moves the
 //                                       mesh, not a coefficient (sensitivity/GeoParameterMotion)
 //   "Thermal:<name>"                    a property of Material/Thermal: Conductivity, Density,
-//                                       Specific Heat, Heat Fraction (seeded in the energy kernel)
+//                                       Specific Heat, Heat Fraction (seeded in the temperature rows)
 //   "Boundary Value:<group>/<entry>"    a value a boundary group's condition gives: Velocity X,
 //                                       Velocity Y (a ram speed), Temperature (a billet's),
 //                                       Heat Transfer Coefficient, Ambient or Tool Temperature.

@@ -12,7 +12,7 @@ namespace flowform {
 struct FlowPhysics {
   FlowKernelSettings kernel;
   MaterialParameters<double> material = powerLaw(0.0, 1.0, 1.0, 1e-3);
-  ThermalProperties thermal;  ///< Material/Thermal (read by the energy kernel; a case without it has no T)
+  ThermalProperties thermal;  ///< Material/Thermal (read by the temperature rows; a case without it has no T)
 };
 
 }  // namespace flowform

@@ -75,11 +75,15 @@ Scalar stabilizationTau(double beta, double hK, const Scalar& muK) {
 /// `cq` is the integration rule, `centroid` a one-point rule at the centroid (for μ_K),
 /// `hK` the cell diameter. `dual` (the cell's points, Jacobian evaluations only; null: the
 /// exact tangent) selects the stress–velocity linearization of s (physics/StressDual.hpp) and
-/// is moved to this iterate first; the values are the same either way.
+/// is moved to this iterate first; the values are the same either way. `dissipation` (null:
+/// none) receives the plastic power density s:D = 2 μ(e_r) D:D at each point of `cq`, with the
+/// exact μ (never the dual's): what the energy equation's heating reads (kernels/
+/// ThermoMechanicalKernel.hpp), the law evaluated once for both.
 template <typename Scalar, typename PScalar>
 void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, double hK,
                      const FlowKernelSettings& settings, const MaterialParameters<PScalar>& material,
-                     const Scalar* dofs, Scalar* residual, StressDualPoint* dual = nullptr) {
+                     const Scalar* dofs, Scalar* residual, StressDualPoint* dual = nullptr,
+                     Scalar* dissipation = nullptr) {
   const Geometry geometry = settings.geometry;
   const double fx = settings.bodyForce[0], fy = settings.bodyForce[1];
 
@@ -90,6 +94,7 @@ void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, d
     const StrainRate<Scalar> d = strainRateAt(cq, q, geometry, dofs);
     const Scalar eReg = regularizedStrainRate(d.ddot(), material);
     const Scalar mu = viscosity(eReg, material);
+    if (dissipation) dissipation[q] = 2.0 * mu * d.ddot();
     Scalar sxx = 2.0 * mu * d.xx, syy = 2.0 * mu * d.yy, sxy = 2.0 * mu * d.xy, stt = 2.0 * mu * d.tt;
     if constexpr (!std::is_same_v<Scalar, double>) {
       if (dual) {

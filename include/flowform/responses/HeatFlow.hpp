@@ -2,7 +2,7 @@
 // group held at a prescribed temperature (a cooled wall, a tool at its temperature), by
 // conduction; a case with a Temperature field (Material/Thermal, docs/theory.md §10) only.
 //
-// R_T is the energy equation's unconstrained residual (physics/kernels/EnergyKernel.hpp). With
+// R_T is the energy equation's unconstrained residual (physics/kernels/ThermoMechanicalKernel.hpp). With
 // Σ_a N_a = 1 its weak form gives, at a node a held at its temperature,
 //   R_T,a = ∫_Γ N_a k ∂T/∂n dΓ   (the heat that enters through Γ near a)
 // so the sum over the group is the consistent heat flux into the workpiece and Q its negative

@@ -1,17 +1,14 @@
-// The energy balance's kernel (physics/kernels/EnergyKernel.hpp) coupled to the flow:
+// The flow and its energy balance in one kernel (physics/kernels/ThermoMechanicalKernel.hpp):
 //  - its assembled Jacobian (T rows with u columns: convection, heating, SUPG's τ(u)) matches
 //    central differences of the assembled residual, on P1 and Q1 meshes, plane and
 //    axisymmetric, in the diffusive (ρc = 1) and convective (ρc = 1e3: cell Péclet ≫ 1) regimes;
-//  - with a temperature-dependent law (Sellars–Tegart, ThermalFlowKernel) the same, the flow rows
-//    now with T columns;
+//  - with a temperature-dependent law (Sellars–Tegart) the same, the flow rows now with T columns;
 //  - without flow (u = 0: held on three sides, free on the fourth) and with T prescribed on the boundary to T = a + b x + d y in plane
 //    strain, a linear T is reproduced (no heating, no convection, diffusion exact for linear T).
 #include "AssemblyProblem.hpp"
 
 #include "flowform/discretization/FieldRegistry.hpp"
-#include "flowform/physics/kernels/EnergyKernel.hpp"
-#include "flowform/physics/kernels/FlowKernel.hpp"
-#include "flowform/physics/kernels/ThermalFlowKernel.hpp"
+#include "flowform/physics/kernels/ThermoMechanicalKernel.hpp"
 
 namespace {  // AssemblyProblem.hpp's, with its using-declarations
 
@@ -28,7 +25,7 @@ struct ThermalProblem {
   std::unique_ptr<Assembler> assembler;
 
   ThermalProblem(Mesh m, const ParameterList& bcList, const FlowPhysics& physics, const RCP<const Comm>& comm,
-                 const ThermalProperties& properties, bool temperatureDependentFlow = false)
+                 const ThermalProperties& properties)
       : mesh(std::move(m)) {
     const FieldRegistry fields = flowAndTemperature();
     dofMap = std::make_unique<DofMap>(mesh, comm, std::vector<std::array<GO, 2>>{}, fields);
@@ -37,9 +34,7 @@ struct ThermalProblem {
     FlowPhysics withProperties = physics;
     withProperties.thermal = properties;
     assembler->setPhysics(withProperties);
-    assembler->setKernels({temperatureDependentFlow ? makeCellKernel(ThermalFlowKernel{}, fields)
-                                                    : makeCellKernel(FlowKernel{}, fields),
-                           makeCellKernel(EnergyKernel{}, fields)});
+    assembler->setKernels({makeCellKernel(ThermoMechanicalKernel{}, fields)});
   }
   RCP<Vector> vector() const { return Teuchos::rcp(new Vector(dofMap->ownedMap())); }
 };
@@ -73,7 +68,7 @@ double jacobianError(const ThermalProblem& problem, double T0, double T1) {
   return fp->normInf() / jv->normInf();
 }
 
-TEUCHOS_UNIT_TEST(EnergyKernel, JacobianMatchesFiniteDifferences) {
+TEUCHOS_UNIT_TEST(ThermoMechanicalKernel, JacobianMatchesFiniteDifferences) {
   const auto comm = worldComm();
   for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4})
     for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric})
@@ -87,10 +82,9 @@ TEUCHOS_UNIT_TEST(EnergyKernel, JacobianMatchesFiniteDifferences) {
       }
 }
 
-TEUCHOS_UNIT_TEST(EnergyKernel, TemperatureDependentLawJacobianMatchesFiniteDifferences) {
-  // Sellars–Tegart read at each cell's temperature by the flow (ThermalFlowKernel) and by the
-  // heating: the Jacobian's ∂R_u/∂T and ∂R_T/∂T through σ̄(T) against central differences, as
-  // above. Q/(R T) ≈ 25 at T ≈ 700: σ̄ changes by about 3 % per kelvin, a stiff coupling.
+TEUCHOS_UNIT_TEST(ThermoMechanicalKernel, TemperatureDependentLawJacobianMatchesFiniteDifferences) {
+  // Sellars–Tegart read at each cell's temperature by the flow rows and by the heating: the
+  // Jacobian's ∂R_u/∂T and ∂R_T/∂T through σ̄(T) against central differences, as above. Q/(R T) ≈ 25 at T ≈ 700: σ̄ changes by about 3 % per kelvin, a stiff coupling.
   const auto comm = worldComm();
   MaterialParameters<double> law;
   law.law = kMaterialLawIndex<SellarsTegart>;
@@ -101,7 +95,7 @@ TEUCHOS_UNIT_TEST(EnergyKernel, TemperatureDependentLawJacobianMatchesFiniteDiff
       FlowPhysics physics = makePhysics(geometry, kNonlinear, 0.1, 0.3, -0.7);
       physics.material = law;
       const ThermalProblem problem(makeMesh(type, 6, 4, 0.2, 0.0, 2.0, 1.0, 0.2, 0.3), generalConditions(), physics,
-                                   comm, properties(1.0), true);
+                                   comm, properties(1.0));
       const double err = jacobianError(problem, 700.0, 50.0);
       out << cellTypeName(type) << (geometry == Geometry::Axisymmetric ? ", axisymmetric" : ", plane")
           << ", Sellars-Tegart: |Jv - FD|inf / |Jv|inf = " << err << "\n";
@@ -109,7 +103,7 @@ TEUCHOS_UNIT_TEST(EnergyKernel, TemperatureDependentLawJacobianMatchesFiniteDiff
     }
 }
 
-TEUCHOS_UNIT_TEST(EnergyKernel, LinearTemperatureWithoutFlowIsExact) {
+TEUCHOS_UNIT_TEST(ThermoMechanicalKernel, LinearTemperatureWithoutFlowIsExact) {
   // u = 0 (all velocities prescribed 0), T prescribed on the boundary nodes: one Newton step on
   // the linear T rows (the flow rows are satisfied) gives the nodal T, which must be linear.
   const auto comm = worldComm();
