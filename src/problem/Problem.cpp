@@ -68,11 +68,7 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
   m_model = std::make_unique<FlowModel>(
       *m_assembler, createLinearSolver(m_params.sublist("Solver").sublist("Linear Solver"), *comm));
-  m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
-  // A wall whose released nodes are a free surface: its separation point may cycle until the
-  // surface has settled; a node that still cycles then decides by itself (ContactWall), and the
-  // free-surface loop does not converge while any other cycles.
-  for (const ContactWall& wall : m_walls) if (wall.releasedFreeSurface()) m_statusLoop->tolerateCycling(true);
+  makeStatusLoop();
   m_freeSurfaces = std::make_unique<FreeSurfaces>(bcList, m_mesh, m_walls);
   if (m_freeSurfaces->empty() && !m_bcs->heldGroups().empty())
     throw InputError("Boundary Conditions/" + m_bcs->heldGroups().front() +
@@ -178,6 +174,14 @@ void Problem::startFrom(const Problem& other, bool decideZoneLimits, bool carryS
   m_warmStart = true;
 }
 
+void Problem::makeStatusLoop() {
+  m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
+  // A wall whose released nodes are a free surface: its separation point may cycle until the
+  // surface has settled; a node that still cycles then decides by itself (ContactWall), and the
+  // free-surface loop does not converge while any other cycles.
+  for (const ContactWall& wall : m_walls) if (wall.releasedFreeSurface()) m_statusLoop->tolerateCycling(true);
+}
+
 void Problem::restoreColdStart() {
   const ColdStart& cold = *m_coldStart;
   Tpetra::deep_copy(*m_solution, *cold.solution);
@@ -187,7 +191,7 @@ void Problem::restoreColdStart() {
   }
   if (!m_bcs->rigidInflow().group.empty()) m_bcs->setRigidInflowSpeed(m_mesh, cold.rigidInflowSpeed);
   m_bcs->imposeOnSolution(*m_solution);
-  m_statusLoop = std::make_unique<ContactStatusLoop>(m_params.sublist("Contact"), m_mesh, *m_dofMap);
+  makeStatusLoop();
   m_model->invalidateJacobian();
   m_warmStart = false;
 }

@@ -245,6 +245,9 @@ class Problem {
   /// m_freeSurfaceReport, its Newton iterations and changes add to the solve's, and a failure makes
   /// the solve unconverged, `context` prefixed to its message.
   void loopFreeSurfaces(NonlinearSolver& solver, std::pair<int, double> unsettledAtStart, const std::string& context);
+  /// The contact-status loop with the case's strategy (Contact/Status Update), cycling tolerated
+  /// where a wall's released nodes are a free surface.
+  void makeStatusLoop();
   /// Back to the start startFrom() replaced (m_coldStart): the solution, the walls' statuses out of
   /// complementarity, the rigid inflow's speed, the case's contact strategy; the problem is no
   /// longer warm-started. The free surfaces keep the carried shape.
