@@ -87,13 +87,17 @@ void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, d
   const Geometry geometry = settings.geometry;
   const double fx = settings.bodyForce[0], fy = settings.bodyForce[1];
 
-  const Scalar tau = stabilizationTau(settings.beta, hK, centroidViscosity(centroid, geometry, material, dofs));
+  const Scalar muK = centroidViscosity(centroid, geometry, material, dofs);
+  const Scalar tau = stabilizationTau(settings.beta, hK, muK);
+  // A one-point rule at the centroid (P1 in plane strain): its μ is μ_K, the same value from the
+  // same operands; the law is evaluated once per cell.
+  const bool centroidRule = cq.numPoints == 1 && cq.x[0] == centroid.x[0] && cq.y[0] == centroid.y[0];
 
   for (int q = 0; q < cq.numPoints; ++q) {
     const double w = measureWeight(cq, q, geometry);
     const StrainRate<Scalar> d = strainRateAt(cq, q, geometry, dofs);
     const Scalar eReg = regularizedStrainRate(d.ddot(), material);
-    const Scalar mu = viscosity(eReg, material);
+    const Scalar mu = centroidRule ? muK : viscosity(eReg, material);
     if (dissipation) dissipation[q] = 2.0 * mu * d.ddot();
     Scalar sxx = 2.0 * mu * d.xx, syy = 2.0 * mu * d.yy, sxy = 2.0 * mu * d.xy, stt = 2.0 * mu * d.tt;
     if constexpr (!std::is_same_v<Scalar, double>) {
