@@ -37,7 +37,7 @@ const SolveReport& Problem::solve() {
   const double looseTolerance = m_assembler->hasFrictionHeat() ? kLooseFirstSolveFrictionHeat : kLooseFirstSolve;
   const double loose = m_statusLoop->complementarity() && !m_walls.empty() ? looseTolerance : 0.0;
   NewtonOptions warm;
-  warm.predictorRestart = !m_coldStart.has_value();
+  warm.predictorRestart = false;  // its fallback is this problem's own start, below
   m_report = m_warmStart ? solver.resolve(*m_solution, m_physics, warm)
                          : solver.solve(*m_solution, m_physics, firstMinimum, loose);
   // The complementarity Newton continues a converged first solve. Should it fail, and the status
@@ -54,7 +54,7 @@ const SolveReport& Problem::solve() {
   // A warm start that fails (the other mesh's contact zones or branch not this mesh's: the
   // extrusion at ν ≳ 1, docs/contact.md) gives way to this problem's own start: the solve a run
   // from scratch on this mesh makes, with its restarts below.
-  if (!m_report.converged && m_warmStart && m_coldStart && !budgetWasSpent()) {
+  if (!m_report.converged && m_warmStart && !budgetWasSpent()) {
     log() << "flowform: the start from the other mesh's state failed (" << m_report.message
           << "); solving from this mesh's own start, as a run from scratch\n";
     const int spent = m_report.newtonIterations;

@@ -63,7 +63,7 @@ REFERENCE = {("xml/extrusion.xml", "0.0"): (3.30663, 4.4505), ("xml/extrusion.xm
 DFDNU_PLANE = (4.2855, 0.017)
 # The planar die swell's mesh-converged value (docs/verification.md §11: 1.1878 at h = 0.025 less
 # the first-order tail of the last difference), uncertain by about 0.0013: 22-23 % of the true
-# errors (0.0057-0.0058) of the coarse meshes item 6 checks, inside the window's margin.
+# errors (0.0057-0.0058) of the coarse meshes item 5 checks, inside the window's margin.
 SWELL_REF = 1.1865
 WALLS = ("container", "die_face", "die_land")
 METHODS = ("Newton Step", "Two-Level")

@@ -19,13 +19,11 @@ import os
 import sys
 
 from flowform_tools import launcher
-from flowform_tools.case import Case
-
-EX = "xml/extrusion.xml"
+from stress_checks import EX, walls
 
 
 def walls_at(source, nu):
-    return [f"Boundary Conditions/{w}/Friction Coefficient={nu}" for w in Case(os.path.join(source, EX)).contact_walls()]
+    return walls(os.path.join(source, EX), "Friction Coefficient", nu)
 
 
 def two_level(flowform, source, out):

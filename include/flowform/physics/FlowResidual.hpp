@@ -96,9 +96,10 @@ void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, d
   for (int q = 0; q < cq.numPoints; ++q) {
     const double w = measureWeight(cq, q, geometry);
     const StrainRate<Scalar> d = strainRateAt(cq, q, geometry, dofs);
-    const Scalar eReg = regularizedStrainRate(d.ddot(), material);
+    const Scalar ddot = d.ddot();
+    const Scalar eReg = regularizedStrainRate(ddot, material);
     const Scalar mu = centroidRule ? muK : viscosity(eReg, material);
-    if (dissipation) dissipation[q] = 2.0 * mu * d.ddot();
+    if (dissipation) dissipation[q] = 2.0 * mu * ddot;
     Scalar sxx = 2.0 * mu * d.xx, syy = 2.0 * mu * d.yy, sxy = 2.0 * mu * d.xy, stt = 2.0 * mu * d.tt;
     if constexpr (!std::is_same_v<Scalar, double>) {
       if (dual) {
