@@ -348,12 +348,12 @@ std::vector<CellState> Assembler::cellStates(const Vector& xOwned) const {
   CellGeometry g;
   LO dofs[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
   double values[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
-  const int temperature = temperatureComponentFor(m_dofMap, m_physics.material.law);
+  const LawFieldComponents lawFields = lawFieldComponents(m_dofMap, m_physics);
   for (size_t k = 0; k < m_dofMap.cells().size(); ++k) {
     computeCellGeometry(m_mesh, m_dofMap.cells()[k], geometry, g);
     m_dofMap.cellDofs(k, dofs);
     gather(ws, dofs, EqualOrderLayout::numDofs(npc), values);
-    const MaterialParameters<double> material = cellMaterial(ws, m_dofMap, k, g, m_physics.material, temperature);
+    const MaterialParameters<double> material = cellMaterial(ws, m_dofMap, k, g, m_physics.material, lawFields);
     const auto d = strainRateAt(g.centroid, 0, geometry, values);
     const double eReg = regularizedStrainRate(d.ddot(), material);
     states[k] = {std::sqrt(2.0 / 3.0 * d.ddot()), eReg, viscosity(eReg, material), flowStress(eReg, material)};

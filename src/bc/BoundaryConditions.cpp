@@ -6,7 +6,7 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "flowform/bc/ThermalBoundaryConditions.hpp"
+#include "flowform/bc/FieldBoundaryValues.hpp"
 
 #include "flowform/mesh/BoundaryCurve.hpp"
 #include "flowform/core/InputError.hpp"
@@ -103,7 +103,7 @@ static void buildValidGroupParameters(const ValidList& valid) {
              "strip nobody pushes, docs/rolling.md). At most one group");
   valid->set("Traction X", 0.0, "traction t_x, force per unit area, on free components", finiteNumber());
   valid->set("Traction Y", 0.0, "traction t_y, force per unit area, on free components", finiteNumber());
-  ThermalBoundaryConditions::declareGroupParameters(*valid);
+  declareFieldBoundaryEntries(*valid);
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::validGroupParameters() {

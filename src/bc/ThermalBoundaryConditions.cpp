@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "flowform/bc/BoundaryConditions.hpp"
+#include "flowform/bc/FieldBoundaryValues.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/NumberRange.hpp"
 
@@ -59,27 +60,7 @@ std::string ThermalBoundaryConditions::firstThermalGroup(const Teuchos::Paramete
 }
 
 ThermalBoundaryConditions::ThermalBoundaryConditions(const Teuchos::ParameterList& bcList, const Mesh& mesh) {
-  std::map<GO, std::pair<double, std::string>> values;  // node -> (T, group)
-  for (auto it = bcList.begin(); it != bcList.end(); ++it) {
-    const std::string& name = bcList.name(it);
-    if (!bcList.isSublist(name) || !bcList.sublist(name).isParameter("Temperature")) continue;
-    const double t = readDouble(bcList.sublist(name), name, "Temperature");
-    if (!mesh.hasBoundary(name))
-      throw InputError("Boundary Conditions/" + name + ": mesh '" + mesh.source +
-                       "' has no boundary group of that name; it has: " + mesh.boundaryNames());
-    for (const auto& edge : mesh.boundary(name).edges)
-      for (GO node : edge) {
-        const auto [at, inserted] = values.emplace(node, std::make_pair(t, name));
-        if (!inserted && std::abs(at->second.first - t) > 1e-12 * (std::abs(t) + std::abs(at->second.first))) {
-          std::ostringstream os;
-          os << "Boundary Conditions: groups '" << at->second.second << "' and '" << name
-             << "' prescribe different temperatures (" << at->second.first << ", " << t << ") at their shared node "
-             << node << " (" << mesh.coords[node][0] << ", " << mesh.coords[node][1] << ")";
-          throw InputError(os.str());
-        }
-      }
-  }
-  for (const auto& [node, value] : values) m_prescribed.push_back({node, value.first});
+  m_prescribed = prescribedGroupValues(bcList, mesh, "Temperature", "temperatures");
 
   for (auto it = bcList.begin(); it != bcList.end(); ++it) {
     const std::string& name = bcList.name(it);

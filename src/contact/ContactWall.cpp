@@ -10,7 +10,7 @@
 #include <Teuchos_SerialDenseSolver.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "flowform/bc/ThermalBoundaryConditions.hpp"
+#include "flowform/bc/FieldBoundaryValues.hpp"
 #include "flowform/contact/ToolCorners.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/core/NumberRange.hpp"
@@ -98,7 +98,7 @@ static void buildValidParameters(const ValidList& valid) {
   valid->set("Start Group", "",
              "a Contact Wall with Released Nodes = Free Surface: the boundary group at the wall's upstream end; a Free "
              "Surface group: the boundary group that shares its fixed start (docs/theory.md §3.1)");
-  ThermalBoundaryConditions::declareGroupParameters(*valid);
+  declareFieldBoundaryEntries(*valid);
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> ContactWall::validParameters() {

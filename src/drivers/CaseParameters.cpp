@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <tuple>
 #include <sstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -14,6 +15,7 @@
 #include "flowform/freesurface/FreeSurfaceLoop.hpp"
 #include "flowform/drivers/OutputFields.hpp"
 #include "flowform/mesh/MeshReader.hpp"
+#include "flowform/physics/StrainField.hpp"
 #include "flowform/physics/ThermalProperties.hpp"
 #include "flowform/physics/materials/MaterialLaws.hpp"
 #include "flowform/solvers/NonlinearSolver.hpp"
@@ -95,6 +97,10 @@ static void buildValidCaseParameters(const ValidList& valid) {
   valid->sublist("Material").set("Thermal", *ThermalProperties::validParameters(),
                                  "the workpiece's thermal properties: given, the case has a Temperature field coupled "
                                  "to the flow (docs/theory.md §10); absent, the case is isothermal");
+  valid->sublist("Material").set("Strain Field", *StrainFieldSettings::validParameters(),
+                                 "given, the case has a Strain field (the equivalent strain carried along the "
+                                 "streamlines, u.grad eps = e) that a law with a Strain parameter reads, its inflow "
+                                 "value a group's 'Strain' entry (docs/theory.md §1.1); absent, no strain field");
 
   ParameterList& stab = valid->sublist("Stabilization", false, "pressure stabilization");
   stab.set("Beta", 0.1, "β in τ_K = β h_K² / (2 μ_K); h_K = cell diameter (docs/verification.md)", nonNegative());
@@ -240,21 +246,25 @@ void validateCase(ParameterList& params) {
   } catch (const std::exception& e) {
     throw InputError("in the case parameter list: " + cleanTeuchosMessage(e.what()));
   }
-  // Material/Thermal is validated by itself and kept only when given: its presence is what
-  // gives a case its Temperature field (a default would give every case one).
+  // Material/Thermal and Material/Strain Field are validated by themselves and kept only when
+  // given: their presence is what gives a case its Temperature and Strain fields (a default would
+  // give every case them).
   ParameterList& material = params.sublist("Material");
-  std::optional<ParameterList> thermal;
-  if (material.isSublist("Thermal")) {
-    thermal = material.sublist("Thermal");
-    material.remove("Thermal");
-  }
+  const std::pair<const char*, Teuchos::RCP<const ParameterList>> fieldLists[] = {
+      {"Thermal", ThermalProperties::validParameters()}, {"Strain Field", StrainFieldSettings::validParameters()}};
+  std::vector<std::tuple<std::string, ParameterList, const ParameterList*>> given;
+  for (const auto& [name, validList] : fieldLists)
+    if (material.isSublist(name)) {
+      given.emplace_back(name, material.sublist(name), validList.get());
+      material.remove(name);
+    }
   const ParameterList& validMaterial = *validMaterialParameters(materialLawOf(material));
   checkTypes(material, validMaterial, "Material");
   validateSublist(material, validMaterial, "Material");
-  if (thermal) {
-    checkTypes(*thermal, *ThermalProperties::validParameters(), "Material/Thermal");
-    validateSublist(*thermal, *ThermalProperties::validParameters(), "Material/Thermal");
-    material.set("Thermal", *thermal);
+  for (auto& [name, list, validList] : given) {
+    checkTypes(list, *validList, "Material/" + name);
+    validateSublist(list, *validList, "Material/" + name);
+    material.set(name, list);
   }
   for (const char* name : {"Problem", "Stabilization", "Solver", "Output", "Contact", "Error Estimation",
                            "Free Surface"})

@@ -69,6 +69,8 @@ FieldSet gatherOutputFields(const Assembler& assembler, const Vector& solution, 
   fields.nodal = {nodal(*allDofs, 0, {kUx, kUy}, {"velocity", 2, {}}), nodal(*allDofs, 0, {kP}, {"pressure", 1, {}})};
   if (const int t = dofMap.fields().componentOf(kTemperatureField); t >= 0)
     fields.nodal.push_back(nodal(*allDofs, 0, {t}, {"temperature", 1, {}}));
+  if (const int e = dofMap.fields().componentOf(kStrainField); e >= 0)
+    fields.nodal.push_back(nodal(*allDofs, 0, {e}, {"strain", 1, {}}));
   if (!walls.empty()) {
     // 1 active, 0 free, -1 not on a contact wall
     Field status{"contact_status", 1, std::vector<double>(numNodes, -1.0)};

@@ -55,7 +55,7 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
                                                 m_problem->contactWalls(), m_problem->responses(),
                                                 m_problem->physics().material.law, givenGeoParameters(own),
                                                 givenBoundaryValues(own),
-                                                m_problem->dofMap().fields().contains(kTemperatureField));
+                                                m_problem->dofMap().fields());
   m_sensitivity->checkMethod(!m_problem->boundaryConditions().rigidInflow().group.empty(),
                              !m_problem->freeSurfaces().empty());
   m_setupSeconds = secondsSince(start);

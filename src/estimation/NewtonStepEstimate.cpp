@@ -169,7 +169,7 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
     sensitivity = std::make_unique<Sensitivity>(&list, fine.contactWalls(), fine.responses(),
                                                 fine.physics().material.law, givenGeoParameters(fine.parameters()),
                                                 givenBoundaryValues(fine.parameters()),
-                                                fine.dofMap().fields().contains(kTemperatureField));
+                                                fine.dofMap().fields());
     const GeoPartialsSource geo = geoPartialsOf(fine);
     sensitivity->compute(model, x, fine.responses(), fine.mesh(), fine.dofMap(), fine.contactWalls(), nullptr, &geo);
     lap("sensitivities");

@@ -7,7 +7,7 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "flowform/bc/ThermalBoundaryConditions.hpp"
+#include "flowform/bc/FieldBoundaryValues.hpp"
 #include "flowform/core/InputError.hpp"
 #include "flowform/mesh/BoundaryCurve.hpp"
 #include "flowform/core/ValidList.hpp"
@@ -78,7 +78,7 @@ static void buildValidFreeSurfaceParameters(const ValidList& valid) {
       "a jet, a die land); Arc Length: every segment keeps its length and turns with the flow (a surface that "
       "turns, e.g. a chip's back); docs/theory.md §3.2",
       Teuchos::tuple<std::string>("Spines", "Arc Length"), valid.get());
-  ThermalBoundaryConditions::declareGroupParameters(*valid);
+  declareFieldBoundaryEntries(*valid);
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> validFreeSurfaceParameters() {

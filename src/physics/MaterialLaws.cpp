@@ -148,17 +148,27 @@ MaterialParameters<double> newtonianPredictor(const MaterialParameters<double>& 
   return p;
 }
 
+namespace {
+/// The index of each law's parameter called `name` (−1 where a law has none).
+std::vector<int> parameterIndices(const char* name) {
+  std::vector<int> made;
+  for (const MaterialLawInfo& info : materialLaws()) {
+    int found = -1;
+    for (size_t i = 0; i < info.parameters.size(); ++i)
+      if (std::string(info.parameters[i].name) == name) found = static_cast<int>(i);
+    made.push_back(found);
+  }
+  return made;
+}
+}  // namespace
+
 int temperatureParameter(int law) {
-  static const std::vector<int> index = [] {
-    std::vector<int> made;
-    for (const MaterialLawInfo& info : materialLaws()) {
-      int found = -1;
-      for (size_t i = 0; i < info.parameters.size(); ++i)
-        if (std::string(info.parameters[i].name) == "Temperature") found = static_cast<int>(i);
-      made.push_back(found);
-    }
-    return made;
-  }();
+  static const std::vector<int> index = parameterIndices("Temperature");
+  return index.at(law);
+}
+
+int strainParameter(int law) {
+  static const std::vector<int> index = parameterIndices("Strain");
   return index.at(law);
 }
 

@@ -17,7 +17,7 @@ namespace flowform {
 
 namespace {
 
-/// C = ∫ ρc u·∇T dΩ over this rank's cells, on the kernels' quadrature (ThermoMechanicalKernel's Galerkin
+/// C = ∫ ρc u·∇T dΩ over this rank's cells, on the kernels' quadrature (CoupledFlowKernel's Galerkin
 /// convection term tested with Σ_a N_a = 1).
 double convectedHeat(const Workset& x, const Mesh& mesh, const DofMap& dofMap, Geometry geometry, double rhoC) {
   const int components[3] = {kUx, kUy, dofMap.fields().component(kTemperatureField)};
@@ -116,12 +116,12 @@ EnergyBalance energyBalance(const Problem& problem) {
   for (const auto& [group, through] : crossings)
     if (through.flux < -1e-3 * largest) {
       inFlux += through.flux;
-      inHeat += through.temperatureFlux;
+      inHeat += through.valueFlux;
     }
   b.referenceTemperature = inFlux < 0.0 ? inHeat / inFlux : 0.0;
   double enthalpy = 0.0;
   for (const auto& [group, through] : crossings) {
-    b.enthalpyFlow[group] = rhoC * (through.temperatureFlux - b.referenceTemperature * through.flux);
+    b.enthalpyFlow[group] = rhoC * (through.valueFlux - b.referenceTemperature * through.flux);
     enthalpy += b.enthalpyFlow[group];
   }
   b.heatMade = made;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "flowform/bc/FieldBoundaryValues.hpp"
 #include "flowform/bc/ThermalBoundaryConditions.hpp"
 #include "flowform/contact/ToolCorners.hpp"
 #include "flowform/contact/WallStates.hpp"
@@ -10,7 +11,7 @@
 #include "flowform/freesurface/ReferenceTopology.hpp"
 #include "flowform/mesh/MeshReader.hpp"
 #include "flowform/physics/kernels/FlowKernel.hpp"
-#include "flowform/physics/kernels/ThermoMechanicalKernel.hpp"
+#include "flowform/physics/kernels/CoupledFlowKernel.hpp"
 #include "flowform/solvers/LinearSolverRegistry.hpp"
 
 namespace flowform {
@@ -41,9 +42,11 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   m_responses = std::make_unique<Responses>(m_params.sublist("Responses"), m_mesh);
   m_responses->checkWalls(m_walls);
 
-  // A case with Material/Thermal has a Temperature field, after the flow's (docs/theory.md §10).
+  // A case with Material/Thermal has a Temperature field, after the flow's (docs/theory.md §10); one
+  // with Material/Strain Field a Strain field after that (§1.1).
   const ParameterList& material = m_params.sublist("Material");
   const bool thermal = material.isSublist("Thermal");
+  const bool strain = material.isSublist("Strain Field");
   FieldRegistry fields = FieldRegistry::flow();
   if (thermal) {
     fields.add({kTemperatureField, 1});
@@ -52,19 +55,37 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
                      " gives a thermal condition, but the case has no temperature field: add a Material/Thermal "
                      "sublist (Conductivity, Density, Specific Heat, Heat Fraction) or drop the entry");
   }
-  m_responses->checkTemperatureField(thermal);
+  if (strain) {
+    fields.add({kStrainField, 1});
+    m_physics.strainField = StrainFieldSettings::fromParameters(material.sublist("Strain Field"));
+    m_strainInflow = prescribedGroupValues(bcList, m_mesh, "Strain", "strains");
+    if (m_strainInflow.empty())
+      throw InputError("Material/Strain Field: no boundary group gives the strain the material enters with; add "
+                       "'Strain' (e.g. 0) to the inflow's group (the ram, the entry) in Boundary Conditions");
+  } else if (const std::string group = firstGroupWith(bcList, "Strain"); !group.empty()) {
+    throw InputError("Boundary Conditions/" + group +
+                     "/Strain is given, but the case has no strain field: add a Material/Strain Field sublist or "
+                     "drop the entry");
+  }
+  m_responses->checkFields(fields);
   m_dofMap = std::make_unique<DofMap>(m_mesh, comm, couplings, fields);
   m_bcs = std::make_unique<BoundaryConditions>(bcList, m_mesh, *m_dofMap);
   markHeldNormals();
   m_assembler = std::make_unique<Assembler>(m_mesh, *m_dofMap, *m_bcs);
   if (thermal) m_physics.thermal = ThermalProperties::fromParameters(material.sublist("Thermal"));
   m_assembler->setPhysics(m_physics);
+  // The flow and the fields it carries in one kernel (the law at each cell's field values).
+  if (thermal && strain)
+    m_assembler->setKernels({makeCellKernel(CoupledFlowKernel<true, true>{m_physics.strainField}, fields)});
+  else if (thermal)
+    m_assembler->setKernels({makeCellKernel(CoupledFlowKernel<true, false>{}, fields)});
+  else if (strain)
+    m_assembler->setKernels({makeCellKernel(CoupledFlowKernel<false, true>{m_physics.strainField}, fields)});
   std::optional<ThermalBoundaryConditions> thermalConditions;
-  if (thermal) {
-    // The flow and the energy balance in one kernel (the law at each cell's temperature).
-    m_assembler->setKernels({makeCellKernel(ThermoMechanicalKernel{}, fields)});
+  if (thermal)
     thermalConditions.emplace(applyThermalConditions());
-  }
+  else if (strain)
+    m_assembler->setPrescribedValues(prescribedStrains());
   if (!m_walls.empty()) m_assembler->setContactWalls(&m_walls);
   m_model = std::make_unique<FlowModel>(
       *m_assembler, createLinearSolver(m_params.sublist("Solver").sublist("Linear Solver"), *comm));
@@ -76,6 +97,34 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   m_solution = Teuchos::rcp(new Vector(m_dofMap->ownedMap()));
   m_bcs->imposeOnSolution(*m_solution);
   if (thermalConditions) startTemperature(*thermalConditions);
+  if (strain) startStrain();
+}
+
+std::vector<Assembler::PrescribedValue> Problem::prescribedStrains() const {
+  std::vector<Assembler::PrescribedValue> values;
+  if (m_strainInflow.empty()) return values;
+  const int component = m_dofMap->fields().component(kStrainField);
+  for (const auto& [node, value] : m_strainInflow) values.push_back({node, component, value});
+  return values;
+}
+
+void Problem::startStrain() {
+  // Newton's start for ε: the law's own Strain (the uniform strain it would be read at) when it has
+  // one, else the mean inflow strain; the inflow's values at their nodes.
+  const int e = m_dofMap->fields().component(kStrainField);
+  double start = 0.0;
+  if (const int p = strainParameter(m_physics.material.law); p >= 0) {
+    start = m_physics.material.values[p];
+  } else {
+    for (const auto& [node, value] : m_strainInflow) start += value;
+    start /= static_cast<double>(m_strainInflow.size());
+  }
+  auto x = m_solution->getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (LO n = 0; n < m_dofMap->numOwnedNodes(); ++n) x(m_dofMap->dof(n, e), 0) = start;
+  for (const auto& [node, value] : m_strainInflow) {
+    const LO n = m_dofMap->overlapIndex(node);
+    if (m_dofMap->ownsNode(n)) x(m_dofMap->dof(n, e), 0) = value;
+  }
 }
 
 ThermalBoundaryConditions Problem::applyThermalConditions() {
@@ -83,6 +132,7 @@ ThermalBoundaryConditions Problem::applyThermalConditions() {
   ThermalBoundaryConditions conditions(m_params.sublist("Boundary Conditions"), m_mesh);
   std::vector<Assembler::PrescribedValue> values;
   for (const auto& [node, value] : conditions.prescribed()) values.push_back({node, temperature, value});
+  for (const Assembler::PrescribedValue& v : prescribedStrains()) values.push_back(v);
   m_assembler->setPrescribedValues(values);
   m_assembler->setHeatTransfer(conditions.transferEdges(m_mesh, *m_dofMap), temperature);
   std::vector<double> frictionHeat;  // β per wall, in the walls' order; empty when no wall heats
@@ -98,7 +148,12 @@ void Problem::shiftBoundaryValue(const std::string& group, const std::string& en
   const double value = list.get<double>(entry) + delta;
   list.set(entry, value);
   m_bcs->setGroupValue(m_mesh, group, entry, value);
-  if (m_dofMap->fields().contains(kTemperatureField)) applyThermalConditions();
+  if (m_dofMap->fields().contains(kStrainField))
+    m_strainInflow = prescribedGroupValues(m_params.sublist("Boundary Conditions"), m_mesh, "Strain", "strains");
+  if (m_dofMap->fields().contains(kTemperatureField))
+    applyThermalConditions();
+  else if (m_dofMap->fields().contains(kStrainField))
+    m_assembler->setPrescribedValues(prescribedStrains());
   m_model->invalidateJacobian();
 }
 

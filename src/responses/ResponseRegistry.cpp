@@ -15,17 +15,21 @@ namespace flowform {
 
 namespace {
 
-/// T::kNeedsTemperature where a type declares it (the temperature field's responses), else false.
+/// T::kField where a type declares it (the field besides the flow's that it reads), else "".
 template <typename T, typename = void>
-struct NeedsTemperature : std::false_type {};
+struct FieldOf {
+  static constexpr const char* value = "";
+};
 template <typename T>
-struct NeedsTemperature<T, std::void_t<decltype(T::kNeedsTemperature)>> : std::bool_constant<T::kNeedsTemperature> {};
+struct FieldOf<T, std::void_t<decltype(T::kField)>> {
+  static constexpr const char* value = T::kField;
+};
 
-/// Whether T has the optional instance members readsTemperature() and checkMesh(mesh).
+/// Whether T has the optional instance members fieldRead() and checkMesh(mesh).
 template <typename T, typename = void>
-struct HasReadsTemperature : std::false_type {};
+struct HasFieldRead : std::false_type {};
 template <typename T>
-struct HasReadsTemperature<T, std::void_t<decltype(std::declval<const T&>().readsTemperature())>> : std::true_type {};
+struct HasFieldRead<T, std::void_t<decltype(std::declval<const T&>().fieldRead())>> : std::true_type {};
 template <typename T, typename = void>
 struct HasCheckMesh : std::false_type {};
 template <typename T>
@@ -55,9 +59,9 @@ class RegisteredResponse final : public ResponseFunction {
       return false;
     }
   }
-  bool readsTemperature() const override {
-    if constexpr (HasReadsTemperature<T>::value) return m_response.readsTemperature();
-    else return NeedsTemperature<T>::value;
+  std::string fieldRead() const override {
+    if constexpr (HasFieldRead<T>::value) return m_response.fieldRead();
+    else return FieldOf<T>::value;
   }
   void checkMesh(const Mesh& mesh) const override {
     if constexpr (HasCheckMesh<T>::value) m_response.checkMesh(mesh);
@@ -71,7 +75,7 @@ template <typename... Types>
 std::vector<ResponseTypeInfo> collect(ResponseList<Types...>) {
   return {ResponseTypeInfo{Types::kName, Types::kDescription, Types::kNeedsBoundary, Types::kNeedsWall,
                            Types::kReactionBased, Types::kAdaptivityTarget, Types::kDifferentiable,
-                           NeedsTemperature<Types>::value}...};
+                           FieldOf<Types>::value}...};
 }
 
 }  // namespace

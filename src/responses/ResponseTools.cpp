@@ -109,35 +109,35 @@ void cellIntegrals(const Workset& x, const Mesh& mesh, const DofMap& dofMap, con
   Scalar values[EqualOrderLayout::numDofs(kMaxNodesPerCell)];
   plasticPower = stabilizationPower = 0.0;
   deadArea = 0.0;
-  // A law that depends on the temperature, with a Temperature field: the law at each cell's
-  // temperature, as the flow kernel has it (assembly/CellMaterial.hpp).
-  const int temperature = temperatureComponentFor(dofMap, material.law);
+  // A law that reads a Temperature or Strain field: the law at each cell's values, as the flow
+  // kernel has it (assembly/CellMaterial.hpp).
+  const LawFieldComponents lawFields = lawFieldComponents(dofMap, physics);
   for (size_t k = 0; k < dofMap.cells().size(); ++k) {
     computeCellGeometry(mesh, dofMap.cells()[k], geometry, g);
     dofMap.cellDofs(k, dofs);
     gather(x, dofs, EqualOrderLayout::numDofs(npc), values);
-    addCellPowers(g, npc, physics, cellMaterial(x, dofMap, k, g, material, temperature), values, plasticPower,
+    addCellPowers(g, npc, physics, cellMaterial(x, dofMap, k, g, material, lawFields), values, plasticPower,
                   stabilizationPower);
     deadArea += deadCellArea(x, g, npc, dofs, geometry, deadSpeed);
   }
 }
 
 /// The gradient: each cell differentiated by its own dofs (a fixed-size Fad over the cell's flow
-/// dofs and its temperatures), its derivatives added into the totals' components — the cost of
-/// one Jacobian assembly, not of n-component arithmetic in every cell.
+/// dofs and its temperatures and strains), its derivatives added into the totals' components — the
+/// cost of one Jacobian assembly, not of n-component arithmetic in every cell.
 template <>
 void cellIntegrals<GradientFad>(const Workset& x, const Mesh& mesh, const DofMap& dofMap, const FlowPhysics& physics,
                                 const MaterialParameters<GradientFad>& material, double deadSpeed,
                                 GradientFad& plasticPower, GradientFad& stabilizationPower, double& deadArea) {
   constexpr int kFlow = EqualOrderLayout::numDofs(kMaxNodesPerCell);
-  constexpr int kCell = kFlow + kMaxNodesPerCell;
+  constexpr int kCell = kFlow + 2 * kMaxNodesPerCell;
   using CellFad = Sacado::Fad::SFad<double, kCell>;
   const int npc = dofMap.nodesPerCell();
   const int nFlow = EqualOrderLayout::numDofs(npc);
   const Geometry geometry = physics.kernel.geometry;
   CellGeometry g;
-  LO dofs[kFlow + kMaxNodesPerCell];
-  CellFad values[kFlow], temperatures[kMaxNodesPerCell];
+  LO dofs[kCell];
+  CellFad values[kFlow], temperatures[kMaxNodesPerCell], strains[kMaxNodesPerCell];
   plasticPower = GradientFad(x.gradientSize, 0.0);
   stabilizationPower = GradientFad(x.gradientSize, 0.0);
   deadArea = 0.0;
@@ -145,19 +145,24 @@ void cellIntegrals<GradientFad>(const Workset& x, const Mesh& mesh, const DofMap
   base.law = material.law;
   for (int i = 0; i < kMaxMaterialParameters; ++i) base.values[i] = material.values[i].val();
   base.cutoff = material.cutoff.val();
-  const int temperature = temperatureComponentFor(dofMap, material.law);
+  const LawFieldComponents lawFields = lawFieldComponents(dofMap, physics);
+  // The cell's nodal values of the field in `component`, seeded after the n dofs seeded so far.
+  auto seedField = [&](int component, CellFad* nodal, int& n, size_t k) {
+    dofMap.cellDofs(k, &component, 1, dofs + n);
+    for (int a = 0; a < npc; ++a) nodal[a] = CellFad(kCell, n + a, x.x(dofs[n + a], 0));
+    n += npc;
+  };
   for (size_t k = 0; k < dofMap.cells().size(); ++k) {
     computeCellGeometry(mesh, dofMap.cells()[k], geometry, g);
     dofMap.cellDofs(k, dofs);
     int n = nFlow;
     for (int i = 0; i < nFlow; ++i) values[i] = CellFad(kCell, i, x.x(dofs[i], 0));
-    MaterialParameters<CellFad> cell = base;
-    if (temperature >= 0) {
-      dofMap.cellDofs(k, &temperature, 1, dofs + nFlow);
-      for (int a = 0; a < npc; ++a) temperatures[a] = CellFad(kCell, n + a, x.x(dofs[n + a], 0));
-      cell = atTemperature(base, centroidTemperature(g, temperatures, 1, 0));
-      n += npc;
-    }
+    if (lawFields.temperature >= 0) seedField(lawFields.temperature, temperatures, n, k);
+    if (lawFields.strain >= 0) seedField(lawFields.strain, strains, n, k);
+    const MaterialParameters<CellFad> cell =
+        lawFields.any() ? materialAtCellFields(g, base, lawFields.temperature >= 0 ? temperatures : nullptr,
+                                               lawFields.strain >= 0 ? strains : nullptr, lawFields.minimumStrain)
+                        : base;
     CellFad plastic = 0.0, stabilization = 0.0;
     addCellPowers(g, npc, physics, cell, values, plastic, stabilization);
     plasticPower.val() += plastic.val();

@@ -55,12 +55,14 @@ void Responses::checkWalls(const std::vector<ContactWall>& walls) const {
   }
 }
 
-void Responses::checkTemperatureField(bool temperatureField) const {
-  if (temperatureField) return;
-  for (const Response& r : m_responses)
-    if (r.function->readsTemperature())
-      throw InputError("Responses/" + r.name + ": a " + responseTypes()[r.type].name +
-                       " response needs a temperature field: add a Material/Thermal sublist");
+void Responses::checkFields(const FieldRegistry& fields) const {
+  for (const Response& r : m_responses) {
+    const std::string field = r.function->fieldRead();
+    if (field.empty() || fields.contains(field)) continue;
+    const std::string sublist = field == kTemperatureField ? "Material/Thermal" : "Material/Strain Field";
+    throw InputError("Responses/" + r.name + ": a " + responseTypes()[r.type].name + " response of the " + field +
+                     " field needs the field: add a " + sublist + " sublist");
+  }
 }
 
 bool Responses::reactionWeights(const std::string& name, const Mesh& mesh, const DofMap& dofMap, Geometry geometry,

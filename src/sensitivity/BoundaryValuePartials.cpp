@@ -7,7 +7,7 @@ namespace flowform {
 BoundaryValues givenBoundaryValues(const Teuchos::ParameterList& caseParams) {
   static const char* const kEntries[] = {"Velocity X",          "Velocity Y",          "Temperature",
                                          "Heat Transfer Coefficient", "Ambient Temperature", "Tool Temperature",
-                                         "Friction Heat Fraction"};
+                                         "Friction Heat Fraction", "Strain"};
   BoundaryValues values;
   if (!caseParams.isSublist("Boundary Conditions")) return values;
   const Teuchos::ParameterList& bcList = caseParams.sublist("Boundary Conditions");

@@ -80,8 +80,9 @@ Teuchos::RCP<const Teuchos::ParameterList> Sensitivity::validParameters() {
 
 Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls,
                          const Responses& responses, int materialLaw, const GeoParameterValues& geo,
-                         const BoundaryValues& boundary, bool temperatureField) {
+                         const BoundaryValues& boundary, const FieldRegistry& fields) {
   if (!list) return;
+  const bool temperatureField = fields.contains(kTemperatureField);
   std::set<std::string> seen;
   for (const std::string& given : list->get<Teuchos::Array<std::string>>("Parameters")) {
     const std::string name = trim(given);
@@ -98,6 +99,12 @@ Sensitivity::Sensitivity(const Teuchos::ParameterList* list, const std::vector<C
       throw InputError("Sensitivity/Parameters: '" + name + "' is the law's uniform temperature, which a case with "
                        "Material/Thermal does not use (the Temperature field gives each cell its own); differentiate "
                        "by a boundary's temperature instead, e.g. 'Boundary Value:<inflow group>/Temperature'");
+    // With a Strain field the law's own strain is likewise only the field's start.
+    if (fields.contains(kStrainField) && m_parameters.back().kind == ParameterKind::Material &&
+        m_parameters.back().material == strainParameter(materialLaw))
+      throw InputError("Sensitivity/Parameters: '" + name + "' is the law's uniform strain, which a case with "
+                       "Material/Strain Field does not use (the Strain field gives each cell its own); differentiate "
+                       "by the inflow's strain instead, 'Boundary Value:<inflow group>/Strain'");
     // The Tresca bound m σ̄_k/√3 uses σ̄_k held from the start of the solve (ContactWall::
     // setScales), so its dependence on the material parameters (and on q) is not in ∂R/∂h
     // or K_t: refuse rather than report a derivative that misses a full-size term.

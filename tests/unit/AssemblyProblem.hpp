@@ -157,7 +157,7 @@ inline void interpolate(const Mesh& mesh, const DofMap& dofMap, const Field& fie
 }
 
 /// x ← the flow `field` and a one-component field after the flow's ← `scalar` at the nodes
-/// (owned dofs): a case with a second field (FieldKernelTest, ThermoMechanicalKernelTest).
+/// (owned dofs): a case with a second field (FieldKernelTest, CoupledFlowKernelTest).
 inline void interpolate(const Mesh& mesh, const DofMap& dofMap, const Field& field,
                         const std::function<double(double, double)>& scalar, Vector& x) {
   auto v = x.getLocalViewHost(Tpetra::Access::OverwriteAll);

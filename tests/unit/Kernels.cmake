@@ -27,4 +27,4 @@ flowform_unit_test(FieldKernelTest unit/FieldKernelTest.cpp NP 2)
 set_tests_properties(FieldKernelTest FieldKernelTest_np2 PROPERTIES TIMEOUT 300)
 # The energy balance's kernel (the Temperature field of Material/Thermal): its Jacobian against
 # central differences (P1, Q1, plane, axisymmetric, diffusive and convective) and a linear T exact.
-flowform_unit_test(ThermoMechanicalKernelTest unit/ThermoMechanicalKernelTest.cpp)
+flowform_unit_test(CoupledFlowKernelTest unit/CoupledFlowKernelTest.cpp)

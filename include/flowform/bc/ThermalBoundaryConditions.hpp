@@ -11,7 +11,7 @@
 //                 assembler adds R_T[k] −= β g_k (u_k − v_w)·t_k; the rest goes into the tool)
 // and a group without either is insulated (k ∂T/∂n = 0, the energy equation's natural condition:
 // an outflow, a symmetry line). Each flow condition's validator accepts these entries
-// (declareGroupParameters); this class reads them. The transfer is a boundary condition, not a
+// (declareGroupParameters, through bc/FieldBoundaryValues.hpp); this class reads them. The transfer is a boundary condition, not a
 // reaction: the assembler adds R_T[a] += ∫_edge N_a h (T − T_a) dΓ (× 2π r axisymmetric) to the
 // constrained residual only, so the unconstrained residual's temperature rows at a group's nodes
 // are the heat that leaves there (the Heat Flow response, for held and transferring groups alike).
@@ -23,6 +23,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "flowform/bc/FieldBoundaryValues.hpp"
 #include "flowform/core/Types.hpp"
 #include "flowform/discretization/DofMap.hpp"
 #include "flowform/mesh/Mesh.hpp"
@@ -42,12 +43,8 @@ class ThermalBoundaryConditions {
   /// or a group holds its Temperature and transfers heat too.
   ThermalBoundaryConditions(const Teuchos::ParameterList& bcList, const Mesh& mesh);
 
-  struct NodeTemperature {
-    GO node;
-    double value;
-  };
-  /// The prescribed nodal temperatures, each node once.
-  const std::vector<NodeTemperature>& prescribed() const { return m_prescribed; }
+  /// The prescribed nodal temperatures, each node once (bc/FieldBoundaryValues.hpp).
+  const std::vector<NodeValue>& prescribed() const { return m_prescribed; }
 
   /// One boundary edge that transfers heat: its two overlap nodes, h and T_a.
   struct TransferEdge {
@@ -68,7 +65,7 @@ class ThermalBoundaryConditions {
     std::string group;
     double coefficient, ambient;
   };
-  std::vector<NodeTemperature> m_prescribed;
+  std::vector<NodeValue> m_prescribed;
   std::vector<Transfer> m_transfer;
   std::vector<std::string> m_groups;  ///< heatExchangingGroups()
   std::map<std::string, double> m_frictionHeat;  ///< wall -> β ≠ 0

@@ -21,7 +21,10 @@ struct FieldDescription {
 
 /// The temperature field's name: a case with Material/Thermal registers it after the flow's
 /// (docs/theory.md §10); kernels, responses and solvers look it up by this name.
-inline const std::string kTemperatureField = "Temperature";
+inline constexpr const char* kTemperatureField = "Temperature";
+/// The equivalent strain field's name: a case with Material/Strain Field registers it after the
+/// flow's and the temperature's (docs/theory.md §1.1).
+inline constexpr const char* kStrainField = "Strain";
 
 class FieldRegistry {
  public:

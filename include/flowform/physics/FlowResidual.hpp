@@ -78,12 +78,13 @@ Scalar stabilizationTau(double beta, double hK, const Scalar& muK) {
 /// is moved to this iterate first; the values are the same either way. `dissipation` (null:
 /// none) receives the plastic power density s:D = 2 μ(e_r) D:D at each point of `cq`, with the
 /// exact μ (never the dual's): what the energy equation's heating reads (kernels/
-/// ThermoMechanicalKernel.hpp), the law evaluated once for both.
+/// CoupledFlowKernel.hpp), the law evaluated once for both; `strainRate` (null: none) receives e_r
+/// at each point (what the strain field's rows read, physics/StrainField.hpp).
 template <typename Scalar, typename PScalar>
 void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, double hK,
                      const FlowKernelSettings& settings, const MaterialParameters<PScalar>& material,
                      const Scalar* dofs, Scalar* residual, StressDualPoint* dual = nullptr,
-                     Scalar* dissipation = nullptr) {
+                     Scalar* dissipation = nullptr, Scalar* strainRate = nullptr) {
   const Geometry geometry = settings.geometry;
   const double fx = settings.bodyForce[0], fy = settings.bodyForce[1];
 
@@ -100,6 +101,7 @@ void addFlowResidual(const CellQuadrature& cq, const CellQuadrature& centroid, d
     const Scalar eReg = regularizedStrainRate(ddot, material);
     const Scalar mu = centroidRule ? muK : viscosity(eReg, material);
     if (dissipation) dissipation[q] = 2.0 * mu * ddot;
+    if (strainRate) strainRate[q] = eReg;
     Scalar sxx = 2.0 * mu * d.xx, syy = 2.0 * mu * d.yy, sxy = 2.0 * mu * d.xy, stt = 2.0 * mu * d.tt;
     if constexpr (!std::is_same_v<Scalar, double>) {
       if (dual) {

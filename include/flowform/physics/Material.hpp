@@ -42,19 +42,26 @@ Scalar flowStress(const Scalar& eReg, const MaterialParameters<PScalar>& m) {
   return lawFlowStress(eReg, m);
 }
 
-/// The material at temperature T (a Temperature field's value in a cell): the law's "Temperature"
-/// parameter replaced by T, the others carried over (with their seeded derivatives); the
-/// material unchanged, in Scalar, when its law does not depend on T. Scalar may carry the
-/// derivative of T with respect to the dofs (the Jacobian's coupling block ∂R_u/∂T).
+/// The material in a cell whose fields the law reads: the law's "Temperature" parameter replaced by
+/// *T (a Temperature field's value in the cell) and its "Strain" parameter by *strain (the strain
+/// field's regularized value, physics/StrainField.hpp), each when given and when the law has it;
+/// the others carried over (with their seeded derivatives). Scalar may carry the derivatives of T
+/// and ε with respect to the dofs (the Jacobian's coupling blocks ∂R_u/∂T, ∂R_u/∂ε).
 template <typename Scalar, typename PScalar>
-MaterialParameters<Scalar> atTemperature(const MaterialParameters<PScalar>& m, const Scalar& T) {
+MaterialParameters<Scalar> atFieldValues(const MaterialParameters<PScalar>& m, const Scalar* T, const Scalar* strain) {
   MaterialParameters<Scalar> out;
   out.law = m.law;
   for (int i = 0; i < kMaxMaterialParameters; ++i) out.values[i] = Scalar(m.values[i]);
   out.cutoff = Scalar(m.cutoff);
-  const int t = temperatureParameter(m.law);
-  if (t >= 0) out.values[t] = T;
+  if (const int t = temperatureParameter(m.law); T && t >= 0) out.values[t] = *T;
+  if (const int e = strainParameter(m.law); strain && e >= 0) out.values[e] = *strain;
   return out;
+}
+
+/// The material at temperature T (atFieldValues without a strain).
+template <typename Scalar, typename PScalar>
+MaterialParameters<Scalar> atTemperature(const MaterialParameters<PScalar>& m, const Scalar& T) {
+  return atFieldValues(m, &T, static_cast<const Scalar*>(nullptr));
 }
 
 /// μ = σ̄ / (3 e_r).

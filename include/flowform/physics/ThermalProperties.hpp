@@ -1,5 +1,5 @@
 // The thermal properties of the workpiece (Material/Thermal): a case that gives this sublist
-// gets a Temperature field, coupled to the flow in one Newton (physics/kernels/ThermoMechanicalKernel.hpp,
+// gets a Temperature field, coupled to the flow in one Newton (physics/kernels/CoupledFlowKernel.hpp,
 // docs/theory.md §10); a case without it has no temperature unknowns at all.
 //
 //   k   Conductivity     [power / (length · temperature)]   mW/(mm K) = N/(s K) with mm, s, MPa
@@ -40,7 +40,7 @@ struct ThermalProperties {
   static ThermalProperties fromParameters(const Teuchos::ParameterList& thermal);
 };
 
-/// What the temperature rows (ThermoMechanicalKernel) read, on the parameter scalar (PScalar: an AD type with the property a
+/// What the temperature rows (CoupledFlowKernel) read, on the parameter scalar (PScalar: an AD type with the property a
 /// sensitivity parameter seeds; assembly/EvaluationTypes.hpp thermalFor).
 template <typename PScalar>
 struct ThermalParameters {

@@ -228,9 +228,14 @@ class Problem {
   /// The Temperature field's start (constructor): the law's reference temperature or the mean
   /// prescribed one, the prescribed values (of `conditions`) at their nodes.
   void startTemperature(const ThermalBoundaryConditions& conditions);
+  /// The Strain field's start (constructor): the law's own Strain or the mean inflow strain, the
+  /// inflow's values at their nodes.
+  void startStrain();
+  /// The inflow strains as the assembler's prescribed values (empty without a Strain field).
+  std::vector<Assembler::PrescribedValue> prescribedStrains() const;
   /// The thermal conditions of the case's Boundary Conditions given to the assembler: the
-  /// prescribed temperatures and the heat-transferring edges (a case with the field only);
-  /// returned for the field's start.
+  /// prescribed temperatures (with the inflow strains) and the heat-transferring edges (a case
+  /// with the field only); returned for the field's start.
   ThermalBoundaryConditions applyThermalConditions();
   /// The groups marked Release After Free Surfaces are released (BoundaryConditions::releaseHeld):
   /// the flow is re-solved and the free-surface loop goes on from the converged shape; its report
@@ -279,6 +284,7 @@ class Problem {
     double rigidInflowSpeed = 0.0;
   };
   std::optional<ColdStart> m_coldStart;
+  std::vector<NodeValue> m_strainInflow;  ///< the groups' `Strain` values (a case with a Strain field)
   SolveReport m_report;
   int m_contactChanges = 0;
   FreeSurfaceReport m_freeSurfaceReport;

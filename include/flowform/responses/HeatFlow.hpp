@@ -2,7 +2,7 @@
 // group held at a prescribed temperature (a cooled wall, a tool at its temperature), by
 // conduction; a case with a Temperature field (Material/Thermal, docs/theory.md §10) only.
 //
-// R_T is the energy equation's unconstrained residual (physics/kernels/ThermoMechanicalKernel.hpp). With
+// R_T is the energy equation's unconstrained residual (physics/kernels/CoupledFlowKernel.hpp). With
 // Σ_a N_a = 1 its weak form gives, at a node a held at its temperature,
 //   R_T,a = ∫_Γ N_a k ∂T/∂n dΓ   (the heat that enters through Γ near a)
 // so the sum over the group is the consistent heat flux into the workpiece and Q its negative
@@ -24,7 +24,8 @@ struct HeatFlow {
       "the heat leaving the workpiece by conduction through a group held at a prescribed Temperature (the "
       "temperature rows' reactions, negated); needs Material/Thermal";
   static constexpr bool kNeedsBoundary = true, kNeedsWall = false, kReactionBased = true, kAdaptivityTarget = false,
-                        kDifferentiable = true, kNeedsTemperature = true;
+                        kDifferentiable = true;
+  static constexpr const char* kField = kTemperatureField;
 
   static void declareParameters(Teuchos::ParameterList& list) {
     declareBoundary(list, "the group held at its temperature");

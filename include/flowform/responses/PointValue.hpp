@@ -7,7 +7,7 @@
 // total derivative through the moving surface counts the interpolant's motion too.
 //
 // `Field` is a component of the case's unknowns: Velocity X, Velocity Y, Pressure, Temperature
-// (that one only with Material/Thermal: readsTemperature). A point outside the mesh is refused
+// (only with Material/Thermal), Strain (only with Material/Strain Field; fieldRead). A point outside the mesh is refused
 // before the solve (checkMesh); one that a moving surface leaves outside is an input error at
 // evaluation (exit 2, before any output is written).
 #pragma once
@@ -27,23 +27,24 @@ namespace flowform {
 struct PointValue {
   static constexpr const char* kName = "Point Value";
   static constexpr const char* kDescription =
-      "the interpolated value of one Field (Velocity X, Velocity Y, Pressure, Temperature) at the point (X, Y): a "
-      "thermocouple, a pressure tap";
+      "the interpolated value of one Field (Velocity X, Velocity Y, Pressure, Temperature, Strain) at the point (X, "
+      "Y): a thermocouple, a pressure tap";
   static constexpr bool kNeedsBoundary = false, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
                         kDifferentiable = true;
 
   static void declareParameters(Teuchos::ParameterList& list) {
     list.set("Field", "Temperature",
-             "Point Value: the component read (Temperature needs Material/Thermal)",
-             Teuchos::rcp(new Teuchos::StringValidator(
-                 Teuchos::tuple<std::string>("Velocity X", "Velocity Y", "Pressure", kTemperatureField))));
+             "Point Value: the component read (Temperature needs Material/Thermal, Strain Material/Strain Field)",
+             Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>(
+                 "Velocity X", "Velocity Y", "Pressure", kTemperatureField, kStrainField))));
     list.set("X", 0.0, "Point Value: x (r when axisymmetric) of the point, in the mesh's units", finiteNumber());
     list.set("Y", 0.0, "Point Value: y (z when axisymmetric) of the point, in the mesh's units", finiteNumber());
   }
   explicit PointValue(const Teuchos::ParameterList& p)
       : m_field(p.get<std::string>("Field")), m_point{p.get<double>("X"), p.get<double>("Y")} {}
 
-  bool readsTemperature() const { return m_field == kTemperatureField; }
+  /// The field besides the flow's that the point reads ("" for the flow's own).
+  std::string fieldRead() const { return m_field == kTemperatureField || m_field == kStrainField ? m_field : ""; }
 
   /// Refuses a point that no cell of the (initial) mesh holds.
   void checkMesh(const Mesh& mesh) const {
@@ -57,8 +58,8 @@ struct PointValue {
     const int component = m_field == "Velocity X"   ? kUx
                           : m_field == "Velocity Y" ? kUy
                           : m_field == "Pressure"   ? kP
-                                                    : c.dofMap.fields().componentOf(kTemperatureField);
-    if (component < 0) throw InputError("Responses: a Point Value of " + m_field + " needs Material/Thermal");
+                                                    : c.dofMap.fields().componentOf(m_field);
+    if (component < 0) throw InputError("Responses: a Point Value of " + m_field + " needs its field");
     const CellPoint at = PointLocator(c.mesh).locate(m_point);
     if (!at.inside)
       throw InputError("Responses: a Point Value's point (" + std::to_string(m_point[0]) + ", " +

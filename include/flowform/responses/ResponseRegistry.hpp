@@ -13,9 +13,10 @@
 //                     (reactionWeights): its adjoint gives the adaptive loop's indicators
 //   kDifferentiable   it has a derivative (evaluate<TangentFad>, and its gradient evaluate<GradientFad>); false for the piecewise
 //                     constant ones (Dead Zone, Contact Length), which have evaluate(double) only
-//   kNeedsTemperature (optional, false when absent) it reads the Temperature field
+//   kField            (optional, "" when absent) the field besides the flow's it reads
+//                     (kTemperatureField, kStrainField): a case without it is refused
 // and, optionally, members of an instance:
-//   bool readsTemperature() const      the same, when the parameters decide (Point Value's Field)
+//   std::string fieldRead() const      the same, when the parameters decide (Point Value's Field)
 //   void checkMesh(const Mesh&) const  refuses, before the solve, parameters the mesh cannot
 //                                      serve (InputError naming the entry; Responses prefixes
 //                                      "Responses/<name>/")
@@ -35,6 +36,7 @@
 #include "flowform/responses/ForwardSlip.hpp"
 #include "flowform/responses/HeatFlow.hpp"
 #include "flowform/responses/MeanPressure.hpp"
+#include "flowform/responses/MeanStrain.hpp"
 #include "flowform/responses/NeutralAngle.hpp"
 #include "flowform/responses/PointValue.hpp"
 #include "flowform/responses/RedundantWorkFactor.hpp"
@@ -56,13 +58,13 @@ using RegisteredResponses =
     ResponseList<BoundaryForce, MeanPressure, BoundaryPower, FlowRate, PlasticPower, FrictionPower, PenaltyPower,
                  StabilizationPower, DeadZone, BoundaryExtent, WallGap, ContactLength, WallForce, ThicknessRatio,
                  ShearAngle, ToolPower, ToolTorque, NeutralAngle, ForwardSlip, HeatFlow,
-                 MeanTemperature, MaximumTemperature, PointValue, WallPressure, RedundantWorkFactor>;
+                 MeanTemperature, MaximumTemperature, PointValue, WallPressure, RedundantWorkFactor, MeanStrain>;
 
 /// A type's static facts, by its index in RegisteredResponses.
 struct ResponseTypeInfo {
   std::string name, description;
   bool needsBoundary, needsWall, reactionBased, adaptivityTarget, differentiable;
-  bool needsTemperature;  ///< reads the Temperature field (a type's optional kNeedsTemperature)
+  std::string field;  ///< the field besides the flow's it reads (a type's optional kField), "" none
 };
 const std::vector<ResponseTypeInfo>& responseTypes();
 /// Index of the type called `name`, −1 when there is none.
@@ -86,8 +88,8 @@ class ResponseFunction {
   /// φ = c·R_unc(x): writes c (owned map, zeroed first) and returns true for an adaptivity
   /// target; false (c untouched) for the others.
   virtual bool reactionWeights(const Mesh& mesh, const DofMap& dofMap, Geometry geometry, Vector& c) const = 0;
-  /// Whether this response reads the Temperature field.
-  virtual bool readsTemperature() const = 0;
+  /// The field besides the flow's this response reads ("" none).
+  virtual std::string fieldRead() const = 0;
   /// The type's checkMesh where it has one.
   virtual void checkMesh(const Mesh& mesh) const = 0;
 };

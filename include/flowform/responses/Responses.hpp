@@ -35,9 +35,9 @@ class Responses {
   /// InputError for a response that measures a contact wall (Wall Gap, Contact Length, Wall
   /// Force) on a group that is not one.
   void checkWalls(const std::vector<ContactWall>& walls) const;
-  /// InputError naming the first response that reads the Temperature field, when the case has
-  /// none (`temperatureField` false).
-  void checkTemperatureField(bool temperatureField) const;
+  /// InputError naming the first response that reads a field (Temperature, Strain) the case does
+  /// not have (`fields`: the case's).
+  void checkFields(const FieldRegistry& fields) const;
 
   /// Every response at x, the same on every rank.
   /// `reactions`: the unconstrained residual at x when the caller has it (else assembled here).

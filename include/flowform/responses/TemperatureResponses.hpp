@@ -6,8 +6,8 @@
 //                        temperature; an inflow's T̄ is its own.
 //   Maximum Temperature  the largest nodal temperature (no derivative: the node that holds it may
 //                        change with a parameter).
-// Each needs the field (kNeedsTemperature): a case without it is refused before the solve
-// (Responses::checkTemperatureField).
+// Each needs the field (kField): a case without it is refused before the solve
+// (Responses::checkFields).
 #pragma once
 
 #include <algorithm>
@@ -29,12 +29,12 @@ inline int temperatureComponent(const DofMap& dofMap, const std::string& who) {
   return t;
 }
 
-/// What crosses a boundary curve, summed over the ranks: the flux Q = Σ_k u_k·w_k and the
-/// temperature flux Σ_k T_k u_k·w_k (w_k the Flow Rate's nodal weights, FlowRate.hpp; each node by
-/// its owner; t the Temperature component).
+/// What crosses a boundary curve, summed over the ranks: the flux Q = Σ_k u_k·w_k and the flux of
+/// a scalar field φ, Σ_k φ_k u_k·w_k (w_k the Flow Rate's nodal weights, FlowRate.hpp; each node by
+/// its owner; t the field's component: the temperature's, the strain's).
 template <typename Scalar>
 struct Crossing {
-  Scalar flux, temperatureFlux;
+  Scalar flux, valueFlux;
 };
 template <typename Scalar>
 Crossing<Scalar> crossing(const ResponseContext<Scalar>& c, const BoundaryCurve& curve, int t) {
@@ -56,7 +56,8 @@ struct MeanTemperature {
       "the flux-weighted (mixing-cup) temperature of the material crossing the group: integral of T u.n over "
       "integral of u.n; needs Material/Thermal";
   static constexpr bool kNeedsBoundary = true, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
-                        kDifferentiable = true, kNeedsTemperature = true;
+                        kDifferentiable = true;
+  static constexpr const char* kField = kTemperatureField;
 
   static void declareParameters(Teuchos::ParameterList& list) {
     declareBoundary(list, "the group the material crosses (the product's outlet)");
@@ -67,7 +68,7 @@ struct MeanTemperature {
   Scalar evaluate(const ResponseContext<Scalar>& c) const {
     const int t = temperatureComponent(c.dofMap, std::string("the Mean Temperature of '") + m_boundary + "'");
     const Crossing<Scalar> through = crossing(c, buildBoundaryCurve(c.mesh, c.mesh.boundary(m_boundary)), t);
-    return through.temperatureFlux / through.flux;
+    return through.valueFlux / through.flux;
   }
 
  private:
@@ -78,7 +79,8 @@ struct MaximumTemperature {
   static constexpr const char* kName = "Maximum Temperature";
   static constexpr const char* kDescription = "the largest nodal temperature (no derivative); needs Material/Thermal";
   static constexpr bool kNeedsBoundary = false, kNeedsWall = false, kReactionBased = false, kAdaptivityTarget = false,
-                        kDifferentiable = false, kNeedsTemperature = true;
+                        kDifferentiable = false;
+  static constexpr const char* kField = kTemperatureField;
 
   static void declareParameters(Teuchos::ParameterList&) {}
   explicit MaximumTemperature(const Teuchos::ParameterList&) {}

@@ -58,7 +58,7 @@ class Sensitivity {
   /// `geo`: the case's Mesh/Geo Parameters, which "Geo Parameter:<name>" may name.
   Sensitivity(const Teuchos::ParameterList* list, const std::vector<ContactWall>& walls, const Responses& responses,
               int materialLaw, const GeoParameterValues& geo = {}, const BoundaryValues& boundary = {},
-              bool temperatureField = false);
+              const FieldRegistry& fields = FieldRegistry::flow());
 
   bool requested() const { return !m_parameters.empty(); }
   const std::vector<SensitivityParameter>& parameters() const { return m_parameters; }

@@ -58,6 +58,10 @@ MaterialParameters<double> newtonianPredictor(const MaterialParameters<double>& 
 /// value in each cell (physics/Material.hpp atTemperature), and its own value the start of the
 /// field's Newton iteration.
 int temperatureParameter(int law);
+/// The index of law `law`'s parameter called "Strain" (Hensel–Spittel's ε), −1 when the law does not
+/// depend on the strain. With a Strain field (Material/Strain Field) that parameter is the field's
+/// regularized value in each cell (physics/StrainField.hpp), and its own value the field's start.
+int strainParameter(int law);
 /// n, the parameter the continuation moves (NonlinearSolver).
 double& rateExponent(MaterialParameters<double>& m);
 double rateExponent(const MaterialParameters<double>& m);
