@@ -76,11 +76,11 @@ Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, co
   m_assembler->setPhysics(m_physics);
   // The flow and the fields it carries in one kernel (the law at each cell's field values).
   if (thermal && strain)
-    m_assembler->setKernels({makeCellKernel(CoupledFlowKernel<true, true>{m_physics.strainField}, fields)});
+    m_assembler->setKernels({makeCellKernel(CoupledFlowKernel<true, true>{}, fields)});
   else if (thermal)
     m_assembler->setKernels({makeCellKernel(CoupledFlowKernel<true, false>{}, fields)});
   else if (strain)
-    m_assembler->setKernels({makeCellKernel(CoupledFlowKernel<false, true>{m_physics.strainField}, fields)});
+    m_assembler->setKernels({makeCellKernel(CoupledFlowKernel<false, true>{}, fields)});
   std::optional<ThermalBoundaryConditions> thermalConditions;
   if (thermal)
     thermalConditions.emplace(applyThermalConditions());

@@ -161,7 +161,7 @@ void cellIntegrals<GradientFad>(const Workset& x, const Mesh& mesh, const DofMap
     if (lawFields.strain >= 0) seedField(lawFields.strain, strains, n, k);
     const MaterialParameters<CellFad> cell =
         lawFields.any() ? materialAtCellFields(g, base, lawFields.temperature >= 0 ? temperatures : nullptr,
-                                               lawFields.strain >= 0 ? strains : nullptr, lawFields.minimumStrain)
+                                               lawFields.strain >= 0 ? strains : nullptr, lawFields.strainField)
                         : base;
     CellFad plastic = 0.0, stabilization = 0.0;
     addCellPowers(g, npc, physics, cell, values, plastic, stabilization);

@@ -59,9 +59,10 @@ void Responses::checkFields(const FieldRegistry& fields) const {
   for (const Response& r : m_responses) {
     const std::string field = r.function->fieldRead();
     if (field.empty() || fields.contains(field)) continue;
-    const std::string sublist = field == kTemperatureField ? "Material/Thermal" : "Material/Strain Field";
-    throw InputError("Responses/" + r.name + ": a " + responseTypes()[r.type].name + " response of the " + field +
-                     " field needs the field: add a " + sublist + " sublist");
+    const bool temperature = field == kTemperatureField;
+    throw InputError("Responses/" + r.name + ": a " + responseTypes()[r.type].name + " response needs a " +
+                     (temperature ? "temperature" : "strain") + " field: add a " +
+                     (temperature ? "Material/Thermal" : "Material/Strain Field") + " sublist");
   }
 }
 

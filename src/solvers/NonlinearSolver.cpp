@@ -450,17 +450,23 @@ SolveReport NonlinearSolver::solve(Vector& x, const FlowPhysics& target, double 
   const Teuchos::ParameterList& cont = m_params.sublist("Continuation");
   const double nStart = std::min(cont.get<double>("Start Exponent"), rateExponent(target.material));
   const double e0Start = std::max(cont.get<double>("Start Cutoff"), target.material.cutoff);
-  const bool needsContinuation = nStart < rateExponent(target.material) || e0Start > target.material.cutoff;
+  // A law that reads a Strain field feels it gradually: the coupling λ (physics/StrainField.hpp).
+  const bool strainCoupling = strainParameter(target.material.law) >= 0 &&
+                              m_model.assembler().dofMap().fields().contains(kStrainField);
+  const bool needsContinuation =
+      nStart < rateExponent(target.material) || e0Start > target.material.cutoff || strainCoupling;
   double step = needsContinuation ? cont.get<double>("Initial Step") : 1.0;
   const double minStep = minimumStep > 0.0 ? minimumStep : cont.get<double>("Minimum Step");
   const double growth = cont.get<double>("Growth Factor");
 
-  // The physics at λ: n and e0 interpolated geometrically, exactly the target at λ = 1.
+  // The physics at λ: n and e0 interpolated geometrically, the strain field's coupling λ, exactly the
+  // target at λ = 1.
   auto stageAt = [&](double l) {
     FlowPhysics stage = target;
     rateExponent(stage.material) = std::pow(nStart, 1.0 - l) * std::pow(rateExponent(target.material), l);
     stage.material.cutoff = std::pow(e0Start, 1.0 - l) * std::pow(target.material.cutoff, l);
-    if (l == 1.0) stage.material = target.material;  // no rounding
+    if (strainCoupling) stage.strainField.coupling = l;
+    if (l == 1.0) stage = target;  // no rounding
     return stage;
   };
 

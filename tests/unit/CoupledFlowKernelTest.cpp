@@ -43,7 +43,7 @@ struct ThermalProblem {
     FlowPhysics withProperties = physics;
     withProperties.thermal = properties;
     assembler->setPhysics(withProperties);
-    assembler->setKernels({makeCellKernel(CoupledFlowKernel<Thermal, Strain>{physics.strainField}, fields)});
+    assembler->setKernels({makeCellKernel(CoupledFlowKernel<Thermal, Strain>{}, fields)});
   }
   RCP<Vector> vector() const { return Teuchos::rcp(new Vector(dofMap->ownedMap())); }
 };

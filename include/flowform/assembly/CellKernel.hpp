@@ -112,7 +112,9 @@ class CellKernelOf final : public CellKernel {
       gather(ws, dofs, N, values);
       std::fill(res, res + N, Scalar(0.0));
       StressDualPoint* dual = Kernel::kUsesStressDual && ws.dual ? ws.dual->cells.cell(k, numCells) : nullptr;
-      m_kernel.evaluate(CellContext<PScalar>{g, loop.physics.kernel, material, dual, &thermal}, values, res);
+      m_kernel.evaluate(
+          CellContext<PScalar>{g, loop.physics.kernel, material, dual, &thermal, &loop.physics.strainField}, values,
+          res);
       if (loop.applyConstraints) {
         if (m_velocityRow >= 0)
           for (int a = 0; a < NumNodes; ++a)

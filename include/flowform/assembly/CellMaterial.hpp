@@ -14,10 +14,10 @@
 namespace flowform {
 
 /// The components of the fields the case's law reads (−1: none, or the law does not read it),
-/// and ε_min.
+/// and the strain field's settings.
 struct LawFieldComponents {
   int temperature = -1, strain = -1;
-  double minimumStrain = 0.0;
+  StrainFieldSettings strainField;
   bool any() const { return temperature >= 0 || strain >= 0; }
 };
 
@@ -26,7 +26,7 @@ inline LawFieldComponents lawFieldComponents(const DofMap& dofMap, const FlowPhy
   LawFieldComponents c;
   if (temperatureParameter(law) >= 0) c.temperature = dofMap.fields().componentOf(kTemperatureField);
   if (strainParameter(law) >= 0) c.strain = dofMap.fields().componentOf(kStrainField);
-  c.minimumStrain = physics.strainField.minimumStrain;
+  c.strainField = physics.strainField;
   return c;
 }
 
@@ -35,10 +35,11 @@ inline LawFieldComponents lawFieldComponents(const DofMap& dofMap, const FlowPhy
 template <typename Scalar, typename PScalar>
 MaterialParameters<Scalar> materialAtCellFields(const CellGeometry& g, const MaterialParameters<PScalar>& material,
                                                const Scalar* temperatures, const Scalar* strains,
-                                               double minimumStrain) {
+                                               const StrainFieldSettings& strainField) {
   Scalar T = 0.0, eps = 0.0;
   if (temperatures) T = centroidValue(g, temperatures, 1, 0);
-  if (strains) eps = lawStrain(centroidValue(g, strains, 1, 0), minimumStrain);
+  if (const int s = strainParameter(material.law); strains && s >= 0)
+    eps = coupledLawStrain(centroidValue(g, strains, 1, 0), material.values[s], strainField);
   return atFieldValues(material, temperatures ? &T : nullptr, strains ? &eps : nullptr);
 }
 
@@ -59,7 +60,7 @@ MaterialParameters<Scalar> cellMaterial(const Workset& x, const DofMap& dofMap, 
     gather(x, dofs, dofMap.nodesPerCell(), strains);
   }
   return materialAtCellFields(g, material, fields.temperature >= 0 ? temperatures : nullptr,
-                              fields.strain >= 0 ? strains : nullptr, fields.minimumStrain);
+                              fields.strain >= 0 ? strains : nullptr, fields.strainField);
 }
 
 }  // namespace flowform

@@ -23,6 +23,7 @@
 #include "flowform/discretization/CellGeometry.hpp"
 #include "flowform/physics/FlowResidual.hpp"
 #include "flowform/physics/Material.hpp"
+#include "flowform/physics/StrainField.hpp"
 #include "flowform/physics/StressDual.hpp"
 #include "flowform/physics/ThermalProperties.hpp"
 
@@ -35,8 +36,9 @@ struct KernelFields {
 
 /// What a kernel gets for one cell besides its dofs: the cell's geometry (rule, centroid,
 /// h_K), the case's bulk settings (geometry, β, body force), the case's material and thermal
-/// properties (PScalar: seeded by the assembler when a parameter derivative is wanted) and, for a kernel with
-/// kUsesStressDual in a Jacobian evaluation with the dual linearization, the cell's points.
+/// properties (PScalar: seeded by the assembler when a parameter derivative is wanted), the strain
+/// field's settings and, for a kernel with kUsesStressDual in a Jacobian evaluation with the dual
+/// linearization, the cell's points.
 template <typename PScalar>
 struct CellContext {
   const CellGeometry& cell;
@@ -44,6 +46,7 @@ struct CellContext {
   const MaterialParameters<PScalar>& material;
   StressDualPoint* dual = nullptr;
   const ThermalParameters<PScalar>* thermal = nullptr;  ///< k, ρc, η (seeded like the material)
+  const StrainFieldSettings* strainField = nullptr;     ///< ε_min and the coupling λ (a Strain field's)
 };
 
 }  // namespace flowform

@@ -23,6 +23,13 @@
 // (Minimum Strain ε_min > 0: the fitted laws' ε^m2 e^(m4/ε) have no limit at ε → 0, and the
 // stabilized ε_h may dip below 0 near steep layers); ε̃ → ε for ε ≫ ε_min. Its derivative with
 // respect to the strain dofs is the Jacobian's block ∂R_u/∂ε (Sacado).
+//
+// The coupling is switched on by the solver's continuation (NonlinearSolver): at its parameter
+// λ ∈ [0, 1] the law reads ε̂ = ε_u^(1−λ) ε̃^λ, ε_u the law's own uniform Strain, so that the first
+// stages solve a flow that does not yet feel the strain field (its strain is still computed) and
+// λ = 1 is the coupled problem exactly. Hardening at small strain (m4 < 0) makes the metal entering
+// the deformation zone half as strong as the rest; started from the Newtonian predictor with the
+// full coupling, Newton diverged on the hot Hensel–Spittel extrusion.
 #pragma once
 
 #include <cmath>
@@ -38,6 +45,7 @@ namespace flowform {
 /// Material/Strain Field.
 struct StrainFieldSettings {
   double minimumStrain = 0.05;  ///< ε_min > 0
+  double coupling = 1.0;        ///< λ: the law reads ε_u^(1−λ) ε̃^λ (the solver's continuation sets it)
 
   /// The entries of Material/Strain Field, with their ranges.
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -50,6 +58,16 @@ template <typename Scalar>
 Scalar lawStrain(const Scalar& strain, double minimumStrain) {
   using std::sqrt;
   return sqrt(strain * strain + minimumStrain * minimumStrain);
+}
+
+/// ε̂ = ε_u^(1−λ) ε̃^λ, the strain the law reads at coupling λ (ε̃ itself at λ = 1).
+template <typename Scalar, typename PScalar>
+Scalar coupledLawStrain(const Scalar& fieldStrain, const PScalar& uniformStrain, const StrainFieldSettings& settings) {
+  using std::exp;
+  using std::log;
+  const Scalar regularized = lawStrain(fieldStrain, settings.minimumStrain);
+  if (settings.coupling == 1.0) return regularized;
+  return exp((1.0 - settings.coupling) * log(uniformStrain) + settings.coupling * log(regularized));
 }
 
 /// Adds the strain rows R_ε (TransportResidual.hpp: capacity 1, κ_K = e0 h_K², source e_r − e0) into

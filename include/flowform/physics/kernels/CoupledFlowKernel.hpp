@@ -8,6 +8,9 @@
 //   T_K = Σ_a N_a(x_K) T_a,   ε̃_K = sqrt(ε_K² + ε_min²), ε_K = Σ_a N_a(x_K) ε_a   (x_K the centroid)
 //   σ̄ = σ̄(e_r; T_K, ε̃_K)
 //
+// (ε̃_K blended with the law's uniform strain while the solver's continuation switches the coupling
+// on: physics/StrainField.hpp).
+//
 // (a law without a temperature or strain parameter ignores them: the coupling is then one way,
 // flow → field). T_K and ε̃_K carry their dof derivatives: the Jacobian's blocks ∂R_u/∂T (softening
 // as the metal heats) and ∂R_u/∂ε (hardening as it strains).
@@ -56,9 +59,6 @@ struct CoupledFlowKernel {
   static constexpr int kNumComponents = kNumFlowComponents + (Thermal ? 1 : 0) + (Strain ? 1 : 0);
   static constexpr bool kUsesStressDual = true;
 
-  /// ε_min of the strain the law reads (Strain only).
-  StrainFieldSettings strain;
-
   const char* name() const {
     return Thermal && Strain ? "Flow, energy and strain" : Thermal ? "Flow and energy" : "Flow and strain";
   }
@@ -84,7 +84,11 @@ struct CoupledFlowKernel {
       }
     Scalar T = 0.0, epsLaw = 0.0;
     if constexpr (Thermal) T = centroidValue(c.cell, values, C, kT);
-    if constexpr (Strain) epsLaw = lawStrain(centroidValue(c.cell, values, C, kE), strain.minimumStrain);
+    if constexpr (Strain) {
+      const int s = strainParameter(c.material.law);
+      epsLaw = coupledLawStrain(centroidValue(c.cell, values, C, kE), s >= 0 ? c.material.values[s] : PScalar(1.0),
+                                *c.strainField);
+    }
     const MaterialParameters<Scalar> material =
         atFieldValues(c.material, Thermal ? &T : nullptr, Strain ? &epsLaw : nullptr);
     Scalar dissipation[kMaxQuadraturePoints], strainRate[kMaxQuadraturePoints];
