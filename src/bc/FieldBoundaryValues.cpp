@@ -14,8 +14,9 @@ void declareFieldBoundaryEntries(Teuchos::ParameterList& valid) {
   ThermalBoundaryConditions::declareGroupParameters(valid);
   valid.set("Strain", 0.0,
             "the equivalent strain held on the group's nodes (a case with Material/Strain Field only): the strain the "
-            "material enters with at an inflow (0 for an annealed billet)",
-            nonNegative());
+            "material enters with at an inflow (0 for an annealed billet; any finite value is taken, so that a "
+            "finite difference about 0 can be formed)",
+            finiteNumber());
 }
 
 std::string firstGroupWith(const Teuchos::ParameterList& bcList, const std::string& entry) {

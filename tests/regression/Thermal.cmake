@@ -96,3 +96,27 @@ flowform_exit_test(bad_input_hensel_spittel_rate_exponent CASE ../../../xml/chan
 flowform_exit_test(bad_input_hensel_spittel_cold_m9 CASE ../../../xml/channel_hensel_spittel.xml
   SET "Material/Temperature=250"
   CONTAINS "Material (Hensel-Spittel)" "273.15")
+# The Strain field (Material/Strain Field, docs/theory.md §1.1): the exact channel strain, the drawn
+# wire's strain against its plastic work, and the hot Hensel–Spittel extrusion (one-way limit,
+# uniform-strain bounds, DDM against FD; strain_field_checks.py) — and its input errors.
+foreach(what channel drawing hot)
+  add_test(NAME strain_field_${what}
+           COMMAND ${FLOWFORM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/regression/strain_field_checks.py ${what}
+                   $<TARGET_FILE:flowform> ${FLOWFORM_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/strain_field_${what})
+  set_tests_properties(strain_field_${what} PROPERTIES LABELS "regression" TIMEOUT 300)
+endforeach()
+flowform_exit_test(bad_input_strain_without_field CASE channel_small.xml
+  SET "Boundary Conditions/inlet/Strain=0"
+  CONTAINS "Boundary Conditions/inlet/Strain" "Material/Strain Field")
+flowform_exit_test(bad_input_strain_field_without_inflow CASE channel_small.xml
+  SET "Material/Strain Field/Minimum Strain=0.05"
+  CONTAINS "Material/Strain Field" "'Strain'" "inflow")
+flowform_exit_test(bad_input_strain_field_minimum CASE channel_small.xml
+  SET "Material/Strain Field/Minimum Strain=0" "Boundary Conditions/inlet/Strain=0"
+  CONTAINS "Material/Strain Field/Minimum Strain")
+flowform_exit_test(bad_input_mean_strain_without_field CASE channel_small.xml
+  SET "Responses/s/Type=Mean Strain" "Responses/s/Boundary=outlet"
+  CONTAINS "Responses/s" "strain field" "Material/Strain Field")
+flowform_exit_test(bad_input_sensitivity_law_strain_with_field CASE ../../../xml/hot_extrusion_hensel_spittel.xml
+  SET "Sensitivity/Parameters={Strain}"
+  CONTAINS "Sensitivity/Parameters: 'Strain'" "Boundary Value:<inflow group>/Strain")
