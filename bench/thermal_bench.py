@@ -10,9 +10,13 @@
    is 10, 10², … 10⁵ (k = 60.75 … 0.006 N/(s K)), on the default mesh;
 3. work against error of the exit temperature: the meshes h = 0.2, 0.1, 0.05, 0.025 with the
    exit temperature, the run time, and the distance to the Richardson extrapolation of the last
-   three (extrapolate_three).
+   three (extrapolate_three);
+4. strain: xml/hot_extrusion_hensel_spittel.xml (Hensel–Spittel at each cell's temperature and
+   strain) against the same case read at the uniform strain 1 without the Strain field
+   (strain_field_checks.py's edit), on h = 0.1, 0.05, 0.025: median wall times, their ratio,
+   Newton iterations, dofs, the ram force and the product's mean strain.
 
-usage: scripts/python bench/thermal_bench.py [FLOWFORM] [--repeat 3] [--parts cost,peclet,work]
+usage: scripts/python bench/thermal_bench.py [FLOWFORM] [--repeat 3] [--parts cost,peclet,work,strain]
                                              [--workdir DIR]
 The machine's load before and after each part is printed.
 """
@@ -20,6 +24,7 @@ import argparse
 import os
 
 import hot_extrusion_checks
+import strain_field_checks
 from flowform_tools import default_flowform, launcher, machine, repo_path, tables
 from flowform_tools.numerics import extrapolate_three, median
 
@@ -90,11 +95,34 @@ def work(flowform, workdir):
     print(f"extrapolated exit temperature {t_inf:.4f} K (observed order {order:.2f}, monotone: {monotone})")
 
 
+def strain(flowform, workdir, repeat):
+    field = repo_path("xml", "hot_extrusion_hensel_spittel.xml")
+    os.makedirs(workdir, exist_ok=True)
+    uniform = strain_field_checks.without_strain_field(repo_path(), workdir, 1.0)
+    rows = []
+    for h in (0.1, 0.05, 0.025):
+        times = {"field": [], "uniform": []}
+        last = {}
+        for _ in range(repeat):
+            for name, case in (("uniform", uniform), ("field", field)):
+                last[name] = run(flowform, case, os.path.join(workdir, f"strain_{name}_{h:g}"), mesh(h))
+                times[name].append(last[name]["total"])
+        t_field, t_uniform = median(times["field"]), median(times["uniform"])
+        rows.append([f"{h:g}", str(last["uniform"]["dofs"]), str(last["field"]["dofs"]), f"{t_uniform:.2f}",
+                     f"{t_field:.2f}", f"{t_field / t_uniform:.2f}",
+                     f"{last['uniform']['newton']} / {last['field']['newton']}",
+                     f"{last['uniform']['values'].get('ram_force', float('nan')):.1f} / "
+                     f"{last['field']['values'].get('ram_force', float('nan')):.1f}",
+                     f"{last['field']['values'].get('exit_strain', float('nan')):.4f}"])
+    print(tables.markdown(["h", "dofs uniform", "dofs field", "uniform s (median)", "field s (median)", "ratio",
+                           "Newton uniform / field", "ram force uniform / field", "exit strain"], rows, "---:"))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("flowform", nargs="?", default=default_flowform())
     ap.add_argument("--repeat", type=int, default=3)
-    ap.add_argument("--parts", default="cost,peclet,work")
+    ap.add_argument("--parts", default="cost,peclet,work,strain")
     ap.add_argument("--workdir", default="/tmp/flowform_thermal_bench")
     a = ap.parse_args()
     flowform = launcher.require_executable(a.flowform, "thermal_bench.py")
@@ -103,7 +131,7 @@ def main():
     for part in a.parts.split(","):
         before = machine.load()
         {"cost": lambda: cost(flowform, a.workdir, a.repeat), "peclet": lambda: peclet(flowform, a.workdir),
-         "work": lambda: work(flowform, a.workdir)}[part]()
+         "work": lambda: work(flowform, a.workdir), "strain": lambda: strain(flowform, a.workdir, a.repeat)}[part]()
         print(f"# {part}: load {before:.2f} -> {machine.load():.2f}\n", flush=True)
 
 

@@ -92,7 +92,7 @@ double jacobianError(const ThermalProblem& problem, double T0, double T1) {
   return fp->normInf() / jv->normInf();
 }
 
-TEUCHOS_UNIT_TEST(ThermoMechanicalKernel, JacobianMatchesFiniteDifferences) {
+TEUCHOS_UNIT_TEST(CoupledFlowKernel, JacobianMatchesFiniteDifferences) {
   const auto comm = worldComm();
   for (CellType type : {CellType::Triangle3, CellType::Quadrilateral4})
     for (Geometry geometry : {Geometry::PlaneStrain, Geometry::Axisymmetric})
@@ -106,7 +106,7 @@ TEUCHOS_UNIT_TEST(ThermoMechanicalKernel, JacobianMatchesFiniteDifferences) {
       }
 }
 
-TEUCHOS_UNIT_TEST(ThermoMechanicalKernel, TemperatureDependentLawJacobianMatchesFiniteDifferences) {
+TEUCHOS_UNIT_TEST(CoupledFlowKernel, TemperatureDependentLawJacobianMatchesFiniteDifferences) {
   // Sellars–Tegart read at each cell's temperature by the flow rows and by the heating: the
   // Jacobian's ∂R_u/∂T and ∂R_T/∂T through σ̄(T) against central differences, as above. Q/(R T) ≈ 25 at T ≈ 700: σ̄ changes by about 3 % per kelvin, a stiff coupling.
   const auto comm = worldComm();
@@ -159,7 +159,7 @@ TEUCHOS_UNIT_TEST(CoupledFlowKernel, StrainFieldJacobianMatchesFiniteDifferences
       }
 }
 
-TEUCHOS_UNIT_TEST(ThermoMechanicalKernel, LinearTemperatureWithoutFlowIsExact) {
+TEUCHOS_UNIT_TEST(CoupledFlowKernel, LinearTemperatureWithoutFlowIsExact) {
   // u = 0 (all velocities prescribed 0), T prescribed on the boundary nodes: one Newton step on
   // the linear T rows (the flow rows are satisfied) gives the nodal T, which must be linear.
   const auto comm = worldComm();

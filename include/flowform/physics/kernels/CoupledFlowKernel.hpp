@@ -111,7 +111,4 @@ struct CoupledFlowKernel {
   }
 };
 
-/// The flow and its steady energy balance (a case with Material/Thermal only).
-using ThermoMechanicalKernel = CoupledFlowKernel<true, false>;
-
 }  // namespace flowform
