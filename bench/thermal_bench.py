@@ -43,25 +43,33 @@ def run(flowform, case, outdir, sets):
             "dofs": s.get("dofs"), "values": s.get("functionals") or {}}
 
 
-def cost(flowform, workdir, repeat):
-    hot = repo_path("xml", "hot_extrusion.xml")
-    os.makedirs(workdir, exist_ok=True)
-    iso = hot_extrusion_checks.isothermal_case(repo_path(), workdir)
+def paired(flowform, workdir, repeat, cases, extra=()):
+    """Two cases (name, path) alternated on h = 0.1, 0.05, 0.025, `repeat` times each: per mesh the
+    dofs, median wall times and their ratio (second / first), Newton iterations, ram forces, and the
+    second run's `extra` responses."""
+    (a, case_a), (b, case_b) = cases
     rows = []
     for h in (0.1, 0.05, 0.025):
-        times = {"hot": [], "iso": []}
+        times = {a: [], b: []}
         last = {}
         for _ in range(repeat):
-            for name, case in (("iso", iso), ("hot", hot)):
+            for name, case in cases:
                 last[name] = run(flowform, case, os.path.join(workdir, f"{name}_{h:g}"), mesh(h))
                 times[name].append(last[name]["total"])
-        t_hot, t_iso = median(times["hot"]), median(times["iso"])
-        rows.append([f"{h:g}", str(last["iso"]["dofs"]), str(last["hot"]["dofs"]), f"{t_iso:.2f}", f"{t_hot:.2f}",
-                     f"{t_hot / t_iso:.2f}", f"{last['iso']['newton']} / {last['hot']['newton']}",
-                     f"{last['iso']['values'].get('ram_force', float('nan')):.1f} / "
-                     f"{last['hot']['values'].get('ram_force', float('nan')):.1f}"])
-    print(tables.markdown(["h", "dofs iso", "dofs coupled", "iso s (median)", "coupled s (median)", "ratio",
-                           "Newton iso / coupled", "ram force iso / coupled"], rows, "---:"))
+        t_a, t_b = median(times[a]), median(times[b])
+        rows.append([f"{h:g}", str(last[a]["dofs"]), str(last[b]["dofs"]), f"{t_a:.2f}", f"{t_b:.2f}",
+                     f"{t_b / t_a:.2f}", f"{last[a]['newton']} / {last[b]['newton']}",
+                     f"{last[a]['values'].get('ram_force', float('nan')):.1f} / "
+                     f"{last[b]['values'].get('ram_force', float('nan')):.1f}"] +
+                    [f"{last[b]['values'].get(r, float('nan')):.4f}" for r in extra])
+    print(tables.markdown(["h", f"dofs {a}", f"dofs {b}", f"{a} s (median)", f"{b} s (median)", "ratio",
+                           f"Newton {a} / {b}", f"ram force {a} / {b}"] + list(extra), rows, "---:"))
+
+
+def cost(flowform, workdir, repeat):
+    os.makedirs(workdir, exist_ok=True)
+    iso = hot_extrusion_checks.isothermal_case(repo_path(), workdir)
+    paired(flowform, workdir, repeat, [("iso", iso), ("coupled", repo_path("xml", "hot_extrusion.xml"))])
 
 
 def peclet(flowform, workdir):
@@ -96,26 +104,10 @@ def work(flowform, workdir):
 
 
 def strain(flowform, workdir, repeat):
-    field = repo_path("xml", "hot_extrusion_hensel_spittel.xml")
     os.makedirs(workdir, exist_ok=True)
     uniform = strain_field_checks.without_strain_field(repo_path(), workdir, 1.0)
-    rows = []
-    for h in (0.1, 0.05, 0.025):
-        times = {"field": [], "uniform": []}
-        last = {}
-        for _ in range(repeat):
-            for name, case in (("uniform", uniform), ("field", field)):
-                last[name] = run(flowform, case, os.path.join(workdir, f"strain_{name}_{h:g}"), mesh(h))
-                times[name].append(last[name]["total"])
-        t_field, t_uniform = median(times["field"]), median(times["uniform"])
-        rows.append([f"{h:g}", str(last["uniform"]["dofs"]), str(last["field"]["dofs"]), f"{t_uniform:.2f}",
-                     f"{t_field:.2f}", f"{t_field / t_uniform:.2f}",
-                     f"{last['uniform']['newton']} / {last['field']['newton']}",
-                     f"{last['uniform']['values'].get('ram_force', float('nan')):.1f} / "
-                     f"{last['field']['values'].get('ram_force', float('nan')):.1f}",
-                     f"{last['field']['values'].get('exit_strain', float('nan')):.4f}"])
-    print(tables.markdown(["h", "dofs uniform", "dofs field", "uniform s (median)", "field s (median)", "ratio",
-                           "Newton uniform / field", "ram force uniform / field", "exit strain"], rows, "---:"))
+    paired(flowform, workdir, repeat,
+           [("uniform", uniform), ("field", repo_path("xml", "hot_extrusion_hensel_spittel.xml"))], ["exit_strain"])
 
 
 def main():

@@ -5,7 +5,7 @@ Subcommand channel: xml/channel.xml (the power-law channel |y| <= H = 1, σ̄ = 
 σ0 = 0.5, γ = 1, n = 5, e0 = 1e-3, pressure gradient G = 1, length 4) with the strain field, the
 inlet at ε = 0. Fully developed, u = u(y) e_x, so ε(x, y) = x ė(y) / u(y) exactly, with e(y) from
 √3 G|y| = σ̄(e_r) e / e_r (bisection, as thermal_channel_checks.py) and u(y) = √3 ∫_|y|^H e ds
-(|u'| = √3 e; trapezoid rule on 40 001 points, relative error ~1e-9). Asserted at the outlet x = 4
+(|u'| = √3 e; the rate from thermal_channel_checks.strain_rate_profile; trapezoid rule on 40 001 points, relative error ~1e-9). Asserted at the outlet x = 4
 on |y| <= 0.75 (u → 0 at the walls, where ε → ∞): the largest nodal error at N = 32 cells across is
 at most 2e-2 of the exact ε's largest value there (measured 1.1e-2) and at most 1/4 of the N = 8
 error (measured 5.7 times smaller). The errors are not yet asymptotic on these meshes (6.3e-2,
@@ -47,10 +47,11 @@ import sys
 
 import numpy as np
 
+import thermal_channel_checks
 from flowform_tools import h5io, launcher
 from flowform_tools.checks import check, verdict
 
-G, H, SIGMA0, GAMMA, N_EXP, E0, LENGTH = 1.0, 1.0, 0.5, 1.0, 5.0, 1e-3, 4.0
+E0, LENGTH = thermal_channel_checks.E0, 4.0
 STRAIN_FIELD = ["Material/Strain Field/Minimum Strain=0.05"]
 
 
@@ -62,17 +63,8 @@ def run(flowform, case, outdir, sets):
 
 
 def exact_channel_strain(points=40001):
-    """(y, ε(LENGTH, y)) on [0, H) for the regularized power law."""
-    y = np.linspace(0.0, H, points)
-    target = math.sqrt(3.0) * G * y
-    lo, hi = np.zeros_like(y), np.full_like(y, 1e3)
-    for _ in range(200):  # bisection on √3 G y = σ̄(e_r) e / e_r, monotone in e
-        mid = 0.5 * (lo + hi)
-        er = np.sqrt(mid * mid + E0 * E0)
-        above = (SIGMA0 + (er / GAMMA) ** (1.0 / N_EXP)) * mid / er > target
-        hi = np.where(above, mid, hi)
-        lo = np.where(above, lo, mid)
-    e = 0.5 * (lo + hi)
+    """(y, ε(LENGTH, y)) on [0, H) for the regularized power law (thermal_channel_checks' channel)."""
+    y, e = thermal_channel_checks.strain_rate_profile(points)
     rate = np.sqrt(e * e + E0 * E0) - E0
     du = math.sqrt(3.0) * e  # |u'|
     u = np.concatenate([np.cumsum((0.5 * (du[1:] + du[:-1]) * np.diff(y))[::-1])[::-1], [0.0]])

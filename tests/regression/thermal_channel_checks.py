@@ -67,18 +67,24 @@ def flow_stress(er):
     return SIGMA0 + (er / GAMMA) ** (1.0 / N_EXP)
 
 
-def exact_profile(points=40001):
-    """(y, T(y)) on [0, H] for the regularized law, and the plastic power per unit length ∫ q dy over |y| <= H."""
+def strain_rate_profile(points=40001):
+    """(y, e(y)) on [0, H]: the fully developed channel's equivalent strain rate, from
+    √3 G y = σ̄(e_r) e / e_r by bisection (monotone in e)."""
     y = np.linspace(0.0, H, points)
     target = math.sqrt(3.0) * G * y
     lo, hi = np.zeros_like(y), np.full_like(y, 1e3)
-    for _ in range(200):  # bisection on √3 G y = σ̄(e_r) e / e_r, monotone in e
+    for _ in range(200):
         mid = 0.5 * (lo + hi)
         er = np.sqrt(mid * mid + E0 * E0)
         above = flow_stress(er) * mid / er > target
         hi = np.where(above, mid, hi)
         lo = np.where(above, lo, mid)
-    e = 0.5 * (lo + hi)
+    return y, 0.5 * (lo + hi)
+
+
+def exact_profile(points=40001):
+    """(y, T(y)) on [0, H] for the regularized law, and the plastic power per unit length ∫ q dy over |y| <= H."""
+    y, e = strain_rate_profile(points)
     er = np.sqrt(e * e + E0 * E0)
     q = flow_stress(er) * e * e / er
     dy = np.diff(y)
