@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "flowform/core/Budget.hpp"
@@ -84,12 +85,14 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
     const int type = responseTypeIndex(r.isParameter("Type") ? r.get<std::string>("Type") : responseTypes().front().name);
     return type >= 0 && responseTypes()[type].differentiable;
   };
-  // The largest |φ(to) − φ(from)| / |φ(to) − φ_h| over the differentiable responses.
+  // The largest |φ(to) − φ(from)| / |φ(to) − φ_h| over the differentiable responses; infinite when
+  // a response is not finite (steps that diverged have settled nothing).
   auto moved = [&](const std::map<std::string, double>& from, const std::map<std::string, double>& to) {
     double largest = 0.0;
     for (const auto& [name, value] : to) {
       const auto h = coarseRun.functionals().find(name);
       if (h == coarseRun.functionals().end() || !smooth(name)) continue;
+      if (!std::isfinite(value)) return std::numeric_limits<double>::infinity();
       const double by = std::abs(value - from.at(name)), distance = std::abs(value - h->second);
       // A response that does not move (zero to round-off, or exact on both meshes) is settled.
       if (by > 1e-12 * std::max(std::abs(value), 1.0)) largest = std::max(largest, by / std::max(distance, 1e-300));
@@ -143,17 +146,23 @@ ErrorEstimate NewtonStepEstimate::estimate(const CaseRun& coarseRun, const CaseR
     model.residual(x, residual);
     estimate.details["residual_" + std::to_string(factorizations)] = residual.norm2();
     lap("assembly");
+    if (!std::isfinite(change) || !std::isfinite(residual.norm2())) break;  // diverged: no more steps
   }
   estimate.details["newton_steps"] = factorizations;
   estimate.details["chord_steps"] = chordSteps;
   estimate.details["last_step_change"] = change;
   estimate.details["settled"] = change <= settled ? 1.0 : 0.0;
   if (change > settled) {
-    // Steps that do not settle estimate nothing (a step that moved a response by its whole
-    // estimate): the refined solve is converged instead, with its own fallbacks.
+    // Steps that do not settle (or diverge to a non-finite state) estimate nothing (a step that
+    // moved a response by its whole estimate): the refined solve is converged instead, with its
+    // own fallbacks.
     std::ostringstream why;
-    why << "the responses did not settle in " << factorizations << " Newton steps (the last step moved one by "
-        << change << " of its estimate; Error Estimation/Newton Steps): the two-level estimate instead";
+    if (std::isfinite(change))
+      why << "the responses did not settle in " << factorizations << " Newton steps (the last step moved one by "
+          << change << " of its estimate; Error Estimation/Newton Steps): the two-level estimate instead";
+    else
+      why << "the Newton steps diverged (a response or the residual not finite after " << factorizations
+          << " step(s)): the two-level estimate instead";
     ErrorEstimate twoLevel = twoLevelInstead(why.str(), "unsettled_fallback");
     twoLevel.details["unsettled_newton_steps"] = factorizations;
     twoLevel.details["unsettled_last_step_change"] = change;
