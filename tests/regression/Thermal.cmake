@@ -114,6 +114,9 @@ flowform_exit_test(bad_input_strain_field_without_inflow CASE channel_small.xml
 flowform_exit_test(bad_input_strain_field_minimum CASE channel_small.xml
   SET "Material/Strain Field/Minimum Strain=0" "Boundary Conditions/inlet/Strain=0"
   CONTAINS "Material/Strain Field/Minimum Strain")
+flowform_exit_test(bad_input_strain_field_maximum CASE channel_small.xml
+  SET "Material/Strain Field/Maximum Strain=0.01" "Boundary Conditions/inlet/Strain=0"
+  CONTAINS "Material/Strain Field/Maximum Strain" "Minimum Strain")
 flowform_exit_test(bad_input_mean_strain_without_field CASE channel_small.xml
   SET "Responses/s/Type=Mean Strain" "Responses/s/Boundary=outlet"
   CONTAINS "Responses/s" "strain field" "Material/Strain Field")

@@ -120,7 +120,8 @@ def without_strain_field(source, outdir, strain):
     with open(os.path.join(source, "xml", "hot_extrusion_hensel_spittel.xml")) as f:
         text = f.read()
     edits = [('    <ParameterList name="Strain Field">\n      <Parameter name="Minimum Strain" type="double" value="0.05"/>'
-              '       <!-- ε_min -->\n    </ParameterList>\n', ""),
+              '       <!-- ε_min -->\n      <Parameter name="Maximum Strain" type="double" value="5.0"/>'
+              '        <!-- ε_max -->\n    </ParameterList>\n', ""),
              ('      <Parameter name="Strain" type="double" value="0.0"/>         <!-- the billet enters annealed -->\n', ""),
              ('<Parameter name="Strain" type="double" value="1.0"/>', f'<Parameter name="Strain" type="double" value="{strain}"/>'),
              ('"../meshes/', '"' + os.path.join(source, "meshes") + "/")]

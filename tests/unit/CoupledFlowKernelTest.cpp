@@ -132,7 +132,8 @@ TEUCHOS_UNIT_TEST(CoupledFlowKernel, StrainFieldJacobianMatchesFiniteDifferences
   // m4 = −0.05, m7 = 0.3: σ̄ changes by about 20 % over the state's strains) and, with the
   // Temperature field too, at its temperature: the flow rows' ε (and T) columns and the ε rows'
   // u columns (u·∇ε, the source e_r − e0, τ(u)) against central differences, as above. ε_min =
-  // 0.5 puts part of the state (ε from 0.2 to 1) on the regularization's bend.
+  // 0.5 and ε_max = 0.9 put parts of the state (ε from 0.2 to 1) on both bends of the strain the
+  // law reads.
   const auto comm = worldComm();
   MaterialParameters<double> law;
   law.law = kMaterialLawIndex<HenselSpittel>;
@@ -145,6 +146,7 @@ TEUCHOS_UNIT_TEST(CoupledFlowKernel, StrainFieldJacobianMatchesFiniteDifferences
         FlowPhysics physics = makePhysics(geometry, kNonlinear, 0.1, 0.3, -0.7);
         physics.material = law;
         physics.strainField.minimumStrain = 0.5;
+        physics.strainField.maximumStrain = 0.9;
         const Mesh mesh = makeMesh(type, 6, 4, 0.2, 0.0, 2.0, 1.0, 0.2, 0.3);
         const double err =
             thermal ? jacobianError(ThermalProblem(mesh, generalConditions(), physics, comm, properties(1.0),

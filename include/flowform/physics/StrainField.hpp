@@ -18,11 +18,16 @@
 //
 // A law with a "Strain" parameter (Hensel–Spittel) reads, at each cell's centroid,
 //
-//   ε̃ = sqrt(ε_K² + ε_min²)
+//   ε̃ = ( r^−8 + ε_max^−8 )^(−1/8),   r = sqrt(ε_K² + ε_min²)
 //
-// (Minimum Strain ε_min > 0: the fitted laws' ε^m2 e^(m4/ε) have no limit at ε → 0, and the
-// stabilized ε_h may dip below 0 near steep layers); ε̃ → ε for ε ≫ ε_min. Its derivative with
-// respect to the strain dofs is the Jacobian's block ∂R_u/∂ε (Sacado).
+// — ε_K held smoothly within [ε_min, ε_max], the range hot-working constants are fitted over
+// (beyond it forming codes hold the law constant). Minimum Strain ε_min > 0: the fitted laws'
+// ε^m2 e^(m4/ε) have no limit at ε → 0, and the stabilized ε_h may dip below 0 near steep layers.
+// Maximum Strain ε_max: a dead zone's strain is large and ill-determined (the field's rows there
+// are κ_K's alone), and Newton's steps move it by 10⁴ while the flow is far from converged; read
+// unbounded, those excursions soften the law to nothing and Newton stalled on every refined mesh
+// of the hot Hensel–Spittel extrusion. ε̃ = ε within 0.3 % for 13 ε_min ≤ ε ≤ 0.6 ε_max. Its
+// derivative with respect to the strain dofs is the Jacobian's block ∂R_u/∂ε (Sacado).
 //
 // The coupling is switched on by the solver's continuation (NonlinearSolver): at its parameter
 // λ ∈ [0, 1] the law reads ε̂ = ε_u^(1−λ) ε̃^λ, ε_u the law's own uniform Strain, so that the first
@@ -45,6 +50,7 @@ namespace flowform {
 /// Material/Strain Field.
 struct StrainFieldSettings {
   double minimumStrain = 0.05;  ///< ε_min > 0
+  double maximumStrain = 5.0;   ///< ε_max > ε_min
   double coupling = 1.0;        ///< λ: the law reads ε_u^(1−λ) ε̃^λ (the solver's continuation sets it)
 
   /// The entries of Material/Strain Field, with their ranges.
@@ -53,11 +59,14 @@ struct StrainFieldSettings {
   static StrainFieldSettings fromParameters(const Teuchos::ParameterList& list);
 };
 
-/// ε̃ = sqrt(ε² + ε_min²), the strain a law reads.
+/// ε̃ = sqrt(ε² + ε_min²) held below ε_max: (ε̃^−8 + ε_max^−8)^(−1/8), the strain a law reads.
 template <typename Scalar>
-Scalar lawStrain(const Scalar& strain, double minimumStrain) {
+Scalar lawStrain(const Scalar& strain, const StrainFieldSettings& settings) {
+  using std::pow;
   using std::sqrt;
-  return sqrt(strain * strain + minimumStrain * minimumStrain);
+  const double emin = settings.minimumStrain, emax = settings.maximumStrain;
+  const Scalar regularized = sqrt(strain * strain + emin * emin);
+  return pow(pow(regularized, -8.0) + std::pow(emax, -8.0), -0.125);
 }
 
 /// ε̂ = ε_u^(1−λ) ε̃^λ, the strain the law reads at coupling λ (ε̃ itself at λ = 1).
@@ -65,7 +74,7 @@ template <typename Scalar, typename PScalar>
 Scalar coupledLawStrain(const Scalar& fieldStrain, const PScalar& uniformStrain, const StrainFieldSettings& settings) {
   using std::exp;
   using std::log;
-  const Scalar regularized = lawStrain(fieldStrain, settings.minimumStrain);
+  const Scalar regularized = lawStrain(fieldStrain, settings);
   if (settings.coupling == 1.0) return regularized;
   return exp((1.0 - settings.coupling) * log(uniformStrain) + settings.coupling * log(regularized));
 }

@@ -5,7 +5,7 @@
 //
 // Flow rows: addFlowResidual (physics/FlowResidual.hpp) with the law at the cell's field values
 //
-//   T_K = Σ_a N_a(x_K) T_a,   ε̃_K = sqrt(ε_K² + ε_min²), ε_K = Σ_a N_a(x_K) ε_a   (x_K the centroid)
+//   T_K = Σ_a N_a(x_K) T_a,   ε̃_K = ε_K held within [ε_min, ε_max], ε_K = Σ_a N_a(x_K) ε_a   (x_K the centroid)
 //   σ̄ = σ̄(e_r; T_K, ε̃_K)
 //
 // (ε̃_K blended with the law's uniform strain while the solver's continuation switches the coupling
