@@ -10,6 +10,7 @@
 #include "flowform/physics/ThermalProperties.hpp"
 #include "flowform/problem/Problem.hpp"
 #include "flowform/responses/HeatFlow.hpp"
+#include "flowform/responses/FluxWeightedMean.hpp"
 #include "flowform/responses/TemperatureResponses.hpp"
 #include "flowform/responses/WallPowers.hpp"
 
@@ -94,7 +95,7 @@ EnergyBalance energyBalance(const Problem& problem) {
   b.heatOutTotal = sumOverRanks(comm, out);
   b.convected = sumOverRanks(comm, convectedHeat(x, mesh, dofMap, c.geometry(), rhoC));
 
-  // Per group: the flux and the temperature flux crossing it (MeanTemperature's sums).
+  // Per group: the flux and the temperature flux crossing it (the Mean Temperature's sums, FluxWeightedMean.hpp).
   std::vector<std::pair<std::string, Crossing<double>>> crossings;
   double largest = 0.0;
   for (const BoundaryGroup& group : mesh.boundaries) {
