@@ -18,6 +18,30 @@ namespace flowform {
 
 using Teuchos::ParameterList;
 
+namespace {
+
+/// A scalar field's Newton start (component `component` of x): the law's parameter `lawParameter`
+/// where the law has it (−1: none), else the mean of the prescribed values; the prescribed values at
+/// their nodes.
+void startScalarField(Vector& x, const DofMap& dofMap, int component, int lawParameter,
+                      const MaterialParameters<double>& material, const std::vector<NodeValue>& prescribed) {
+  double start = 0.0;
+  if (lawParameter >= 0) {
+    start = material.values[lawParameter];
+  } else if (!prescribed.empty()) {
+    for (const auto& [node, value] : prescribed) start += value;
+    start /= static_cast<double>(prescribed.size());
+  }
+  auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (LO n = 0; n < dofMap.numOwnedNodes(); ++n) xv(dofMap.dof(n, component), 0) = start;
+  for (const auto& [node, value] : prescribed) {
+    const LO n = dofMap.overlapIndex(node);
+    if (dofMap.ownsNode(n)) xv(dofMap.dof(n, component), 0) = value;
+  }
+}
+
+}  // namespace
+
 Problem::Problem(const ParameterList& caseParams, const FlowPhysics& physics, const std::string& baseDir,
                  const Teuchos::RCP<const Comm>& comm, const SizeField* sizeField)
     : m_params(caseParams), m_comm(comm), m_baseDir(baseDir), m_physics(physics) {
@@ -109,22 +133,10 @@ std::vector<Assembler::PrescribedValue> Problem::prescribedStrains() const {
 }
 
 void Problem::startStrain() {
-  // Newton's start for ε: the law's own Strain (the uniform strain it would be read at) when it has
-  // one, else the mean inflow strain; the inflow's values at their nodes.
-  const int e = m_dofMap->fields().component(kStrainField);
-  double start = 0.0;
-  if (const int p = strainParameter(m_physics.material.law); p >= 0) {
-    start = m_physics.material.values[p];
-  } else {
-    for (const auto& [node, value] : m_strainInflow) start += value;
-    start /= static_cast<double>(m_strainInflow.size());
-  }
-  auto x = m_solution->getLocalViewHost(Tpetra::Access::ReadWrite);
-  for (LO n = 0; n < m_dofMap->numOwnedNodes(); ++n) x(m_dofMap->dof(n, e), 0) = start;
-  for (const auto& [node, value] : m_strainInflow) {
-    const LO n = m_dofMap->overlapIndex(node);
-    if (m_dofMap->ownsNode(n)) x(m_dofMap->dof(n, e), 0) = value;
-  }
+  // Newton's start for ε: the law's own Strain (the uniform strain it would be read at), else the
+  // mean inflow strain.
+  startScalarField(*m_solution, *m_dofMap, m_dofMap->fields().component(kStrainField),
+                   strainParameter(m_physics.material.law), m_physics.material, m_strainInflow);
 }
 
 ThermalBoundaryConditions Problem::applyThermalConditions() {
@@ -159,22 +171,10 @@ void Problem::shiftBoundaryValue(const std::string& group, const std::string& en
 
 void Problem::startTemperature(const ThermalBoundaryConditions& conditions) {
   // Newton's start for T: the law's own Temperature (Sellars–Tegart: its reference, which also
-  // sets the Newtonian predictor's γ), else the mean of the prescribed temperatures; the
-  // prescribed ones at their nodes. A law at T = 0 would have exp(Q/RT) = ∞.
-  const int t = m_dofMap->fields().component(kTemperatureField);
-  double start = 0.0;
-  if (const int p = temperatureParameter(m_physics.material.law); p >= 0) {
-    start = m_physics.material.values[p];
-  } else if (!conditions.prescribed().empty()) {
-    for (const auto& [node, value] : conditions.prescribed()) start += value;
-    start /= static_cast<double>(conditions.prescribed().size());
-  }
-  auto x = m_solution->getLocalViewHost(Tpetra::Access::ReadWrite);
-  for (LO n = 0; n < m_dofMap->numOwnedNodes(); ++n) x(m_dofMap->dof(n, t), 0) = start;
-  for (const auto& [node, value] : conditions.prescribed()) {
-    const LO n = m_dofMap->overlapIndex(node);
-    if (m_dofMap->ownsNode(n)) x(m_dofMap->dof(n, t), 0) = value;
-  }
+  // sets the Newtonian predictor's γ), else the mean of the prescribed temperatures. A law at T = 0
+  // would have exp(Q/RT) = ∞.
+  startScalarField(*m_solution, *m_dofMap, m_dofMap->fields().component(kTemperatureField),
+                   temperatureParameter(m_physics.material.law), m_physics.material, conditions.prescribed());
 }
 
 Problem::~Problem() = default;
