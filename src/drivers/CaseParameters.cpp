@@ -166,6 +166,10 @@ static void buildValidCaseParameters(const ValidList& valid) {
                  "A h^Order + B h^(Second Order) to the three levels (the extrusion's die lip and bulk, of opposite "
                  "signs, which two levels cannot tell apart); the adaptive loop meshes its cycles refined this often",
                  intInRange(1, 2));
+  estimation.set("Nested Start", true,
+                 "Method = Coarser Mesh: the coarser levels are solved first, coarsest to finest, each from the one "
+                 "below, and the run starts from the finest of them (nested iteration: a few Newton steps on the run's "
+                 "mesh); the estimate reads those levels. false: the run first, then each level from the next finer one");
   estimation.set("Second Order", 2.0,
                  "Method = Coarser Mesh with 2 Coarser Levels: the order of the error's second term (the smooth bulk: "
                  "2), larger than Order",

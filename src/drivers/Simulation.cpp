@@ -9,6 +9,7 @@
 #include "flowform/core/Log.hpp"
 #include "flowform/drivers/CaseParameters.hpp"
 #include "flowform/drivers/OutputFields.hpp"
+#include "flowform/estimation/CoarserMeshEstimate.hpp"
 #include "flowform/estimation/EstimationMethods.hpp"
 #include "flowform/io/BoundaryCsvWriter.hpp"
 #include "flowform/io/JsonSummary.hpp"
@@ -63,8 +64,31 @@ Simulation::Simulation(const ParameterList& caseParams, const std::string& baseD
 
 Simulation::~Simulation() = default;
 
+void Simulation::solveCoarserLevelsFirst() {
+  const ParameterList& estimation = parameters().sublist("Error Estimation");
+  const std::string method = estimation.get<std::string>("Method");
+  // The adaptive loop estimates with the registry's first method when the case says None.
+  const bool adaptive = adaptivityRequested(parameters());
+  const std::string used = method == "None" && adaptive ? estimationMethods().front().name : method;
+  if (used != CoarserMeshEstimate::kName || !estimation.get<bool>("Nested Start")) return;
+  // The adaptive loop's indicators are wanted on every cycle but the last (free surfaces then
+  // fall back to the two-level estimate: no levels to solve first).
+  const int levels = CoarserMeshEstimate::levelsOf(*m_problem, adaptive);
+  if (levels == 0) return;
+  std::string failure;
+  m_coarserLevels = CoarserMeshEstimate::solveLevels(*m_problem, levels, factory(m_baseDir, m_comm), failure,
+                                                     m_levelSeconds);
+  if (m_coarserLevels.empty()) {
+    log() << "nested start: " << failure << "; the run solves from its own start, the estimate its levels after it\n";
+    return;
+  }
+  m_problem->startFrom(m_coarserLevels.front()->problem());
+  log() << "nested start: the coarser levels in " << m_levelSeconds << " s; the run starts from the finest\n";
+}
+
 const SolveReport& Simulation::run() {
   const auto start = std::chrono::steady_clock::now();
+  solveCoarserLevelsFirst();
   const SolveReport& report = m_problem->solve();
   if (report.converged) m_functionals = m_problem->evaluateResponses(m_problem->solution());
   m_solveSeconds = secondsSince(start);
@@ -195,6 +219,7 @@ void Simulation::writeOutput(const std::string& outDir) const {
   record.shapeDerivative = &m_shapeDerivative;
   record.setupSeconds = m_setupSeconds;
   record.solveSeconds = m_solveSeconds;
+  record.coarserLevelSeconds = m_levelSeconds;
   record.sensitivitySeconds = m_sensitivitySeconds;
   record.extra = &extra;
   writeJsonFile(dir + "/summary.json", runSummary(*m_problem, record, start));

@@ -15,22 +15,54 @@
 
 namespace flowform {
 
+int CoarserMeshEstimate::levelsOf(const Problem& run, bool indicatorsWanted) {
+  const int refinements = run.parameters().sublist("Mesh").get<int>("Uniform Refinements");
+  // With free surfaces each level converges its own surfaces: the values compare, but the
+  // indicators, interpolated between meshes whose surfaces differ, would not (the header).
+  if (refinements < 1 || (!run.freeSurfaces().empty() && indicatorsWanted)) return 0;
+  return std::min(run.parameters().sublist("Error Estimation").get<int>("Coarser Levels"), refinements);
+}
+
+std::vector<std::unique_ptr<CaseRun>> CoarserMeshEstimate::solveLevels(const Problem& run, int levels,
+                                                                       const CaseRunFactory& makeRun,
+                                                                       std::string& failure, double& seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  const int refinements = run.parameters().sublist("Mesh").get<int>("Uniform Refinements");
+  std::vector<std::unique_ptr<CaseRun>> solved(levels);
+  for (int level = levels; level >= 1; --level) {
+    std::unique_ptr<CaseRun>& at = solved[level - 1];
+    at = makeLevelRun(run, refinements - level, makeRun);
+    if (level < levels) at->problem().startFrom(solved[level]->problem());
+    else if (run.startsFromOtherState()) at->problem().startFrom(run);  // injected: its nodes are the run's
+    log() << "nested start: the case on the mesh " << level << " refinement(s) coarser ("
+          << at->problem().dofMap().numGlobalDofs() << " dofs)\n";
+    at->run();
+    if (at->exitStatus() != 0) {
+      failure = "the mesh " + std::to_string(level) + " refinement(s) coarser (" +
+                std::to_string(at->problem().dofMap().numGlobalDofs()) + " dofs) did not converge: " +
+                at->statusMessage();
+      solved.clear();
+      break;
+    }
+  }
+  seconds = secondsSince(start);
+  return solved;
+}
+
 ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& makeRun,
                                             const std::vector<std::string>& indicatorResponses,
                                             const IndicatorsWanted& wanted) {
   const auto start = std::chrono::steady_clock::now();
   Problem& fine = run.problem();
-  const int refinements = fine.parameters().sublist("Mesh").get<int>("Uniform Refinements");
-  // With free surfaces each level converges its own surfaces: the values compare, but the
-  // indicators, interpolated between meshes whose surfaces differ, would not (the header).
-  const bool surfaceIndicators = !fine.freeSurfaces().empty() && !indicatorResponses.empty();
-  if (refinements < 1 || surfaceIndicators) {
+  const int levels = levelsOf(fine, !indicatorResponses.empty());
+  if (levels == 0) {
+    const bool unrefined = fine.parameters().sublist("Mesh").get<int>("Uniform Refinements") < 1;
     log() << "error estimate: "
-          << (refinements < 1 ? "the mesh is not refined (Mesh/Uniform Refinements = 0): the Newton Step estimate"
-                              : "indicators with free surfaces: the two-level estimate")
+          << (unrefined ? "the mesh is not refined (Mesh/Uniform Refinements = 0): the Newton Step estimate"
+                        : "indicators with free surfaces: the two-level estimate")
           << " instead of the coarser mesh's\n";
-    ErrorEstimate other = refinements < 1 ? NewtonStepEstimate::estimate(run, makeRun, indicatorResponses, wanted)
-                                          : TwoLevelEstimate::estimate(run, makeRun, indicatorResponses, wanted);
+    ErrorEstimate other = unrefined ? NewtonStepEstimate::estimate(run, makeRun, indicatorResponses, wanted)
+                                    : TwoLevelEstimate::estimate(run, makeRun, indicatorResponses, wanted);
     other.details["coarser_mesh_fallback"] = 1.0;
     return other;
   }
@@ -42,11 +74,22 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
   Laps lap(estimate.timings);
 
   // The same case one (and two) refinements coarser, on the size field the run's mesh was made
-  // with, each started from the next finer level's solution.
+  // with: solved before the run (nested start), or now, each from the next finer level's solution.
   const Teuchos::ParameterList& settings = fine.parameters().sublist("Error Estimation");
-  const int levels = std::min(settings.get<int>("Coarser Levels"), refinements);
+  const int refinements = fine.parameters().sublist("Mesh").get<int>("Uniform Refinements");
   std::vector<std::unique_ptr<CaseRun>> coarser;
-  for (int level = 1; level <= levels; ++level) {
+  if (static_cast<int>(run.coarserLevels().size()) == levels) {
+    coarser = std::move(run.coarserLevels());
+    estimate.details["nested_start"] = 1.0;
+    for (int level = 1; level <= levels; ++level) {
+      const Problem& problem = coarser[level - 1]->problem();
+      const std::string name = "level_" + std::to_string(level);
+      estimate.details[name + "_dofs"] = static_cast<double>(problem.dofMap().numGlobalDofs());
+      estimate.details[name + "_newton_iterations"] = problem.report().newtonIterations;
+    }
+  }
+  run.coarserLevels().clear();
+  for (int level = static_cast<int>(coarser.size()) + 1; level <= levels; ++level) {
     coarser.push_back(makeLevelRun(fine, refinements - level, makeRun));
     Problem& problem = coarser.back()->problem();
     const std::string name = "level_" + std::to_string(level);

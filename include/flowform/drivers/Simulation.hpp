@@ -56,6 +56,9 @@ class Simulation final : public CaseRun {
   const Teuchos::ParameterList& parameters() const { return m_problem->parameters(); }
   /// The error estimate of the responses (its `estimated` false when none was made).
   const ErrorEstimate& errorEstimate() const override { return *m_estimate; }
+  /// The coarser levels run() solved before the problem (Error Estimation/Nested Start), the
+  /// finer first, until the estimate takes them.
+  std::vector<std::unique_ptr<CaseRun>>& coarserLevels() override { return m_coarserLevels; }
   /// Estimates the responses' errors now (by the case's Error Estimation/Method, the registry's first when
   /// None: estimation/EstimationMethods.hpp), with nodal indicators for
   /// `indicatorResponses` (the adaptive loop's targets). run() calls it when the case's
@@ -91,6 +94,9 @@ class Simulation final : public CaseRun {
  private:
   /// DDM sensitivities at the converged solution and, when asked, their FD check.
   void runSensitivity();
+  /// Nested iteration before the solve, when the case's estimate is the coarser mesh's and asks
+  /// for it: the levels solved coarse to fine, the problem started from the finest.
+  void solveCoarserLevelsFirst();
 
   Teuchos::RCP<const Comm> m_comm;
   std::string m_baseDir;
@@ -103,6 +109,8 @@ class Simulation final : public CaseRun {
   std::string m_notMet;       ///< why the run did not meet what was asked (setNotMet), or empty
   nlohmann::json m_extraSummary = nlohmann::json::object();
   ShapeDerivative m_shapeDerivative;  ///< derivatives through the moving surfaces, when made
+  std::vector<std::unique_ptr<CaseRun>> m_coarserLevels;  ///< solveCoarserLevelsFirst()'s, finer first
+  double m_levelSeconds = 0.0;  ///< their time (part of the solve's)
   double m_setupSeconds = 0.0;
   double m_solveSeconds = 0.0;
   double m_sensitivitySeconds = 0.0;

@@ -42,6 +42,10 @@ class CaseRun {
   virtual const ShapeDerivative& shapeDerivative() const = 0;
   /// The error estimate of the responses (its `estimated` false when none was made).
   virtual const ErrorEstimate& errorEstimate() const = 0;
+  /// The case on the meshes one and two refinements coarser, solved before this run and its
+  /// start (CoarserMeshEstimate::solveLevels, Error Estimation/Nested Start), the finer first;
+  /// empty when the run was not started that way. The coarser-mesh estimate takes them.
+  virtual std::vector<std::unique_ptr<CaseRun>>& coarserLevels() = 0;
 
   /// Estimates the responses' errors now, with nodal indicators for `indicatorResponses` (a
   /// method that can decide after the estimate asks `wanted` first).

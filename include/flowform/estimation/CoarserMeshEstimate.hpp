@@ -22,6 +22,13 @@
 // penalty residual took the indicators and the loop coarsened the bulk cycle after cycle); the
 // run's statuses are put back afterwards.
 //
+// Nested iteration (Error Estimation/Nested Start, the default): the levels are solved before
+// the run, coarsest first, each from the one below (on nested meshes the coarser solution
+// interpolates exactly), and the run starts from the finest of them: its Newton begins next to its
+// answer, where from the last adaptive cycle's mesh (or from scratch) it would take its full
+// count. The levels cost what they cost after the run (a quarter and a sixteenth of the dofs);
+// the coarsest does the work a run from scratch did, on a sixteenth of the dofs.
+//
 // With free surfaces each coarser level converges its own surfaces from the run's shape
 // (Problem::startFrom carries it; a few updates) and the responses, frozen-shape and total
 // derivatives compare level to level as on a fixed domain (the die swell: effectivity 0.93–1.05,
@@ -51,9 +58,24 @@ struct CoarserMeshEstimate {
   /// the indicators (its solution and statuses are kept). When the coarser solve does not
   /// converge there is no estimate (`failure` says why). Collective.
   /// The indicators are made after the estimate, only when `wanted` (empty: always) says so.
+  /// Levels the run solved before itself (CaseRun::coarserLevels) are taken as they are.
   static ErrorEstimate estimate(CaseRun& run, const CaseRunFactory& makeRun,
                                 const std::vector<std::string>& indicatorResponses,
                                 const IndicatorsWanted& wanted = {});
+
+  /// How many coarser levels the estimate of `run` solves: Coarser Levels, at most its mesh's
+  /// Uniform Refinements; 0 where the method falls back to another (an unrefined mesh, free
+  /// surfaces with indicators wanted).
+  static int levelsOf(const Problem& run, bool indicatorsWanted);
+
+  /// Nested iteration: the case on the meshes `levels` … 1 refinements coarser than `run`'s,
+  /// solved coarsest first, each from the one below (the coarsest from `run`'s carried start when
+  /// it has one, Problem::startFrom, else from scratch); returned the finer first, with
+  /// `seconds` their time. Empty, with `failure` saying why, when a level does not converge.
+  /// Collective.
+  static std::vector<std::unique_ptr<CaseRun>> solveLevels(const Problem& run, int levels,
+                                                           const CaseRunFactory& makeRun, std::string& failure,
+                                                           double& seconds);
 };
 
 }  // namespace flowform

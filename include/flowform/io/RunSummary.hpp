@@ -28,6 +28,8 @@ struct RunRecord {
   const FiniteDifferenceCheck* fdCheck = nullptr;  ///< none when the check was not run
   const ShapeDerivative* shapeDerivative = nullptr;
   double setupSeconds = 0.0, solveSeconds = 0.0, sensitivitySeconds = 0.0;
+  /// Of solveSeconds: the coarser levels solved before the run (Error Estimation/Nested Start).
+  double coarserLevelSeconds = 0.0;
   /// Blocks carried as they are, by key.
   const nlohmann::json* extra = nullptr;
 };

@@ -91,6 +91,8 @@ class Problem {
   /// `carryShapes` false: this mesh keeps its free surfaces as made (another domain's, e.g. a
   /// design whose shape parameter moved the tools: their shape would not fit this one).
   void startFrom(const Problem& other, bool decideZoneLimits = true, bool carryShapes = true);
+  /// startFrom() gave this problem its start (solve() re-solves from there).
+  bool startsFromOtherState() const { return m_warmStart; }
 
   /// Moves the mesh nodes to `coords` (same topology; every cell must stay positively
   /// oriented, else InputError naming the cell) and refreshes what caches geometry: the
