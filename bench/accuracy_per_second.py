@@ -22,7 +22,7 @@ Prints markdown tables (docs/BENCHMARKS.md takes them as printed); a benchmark, 
 usage: scripts/python bench/accuracy_per_second.py [--flowform build/flowform] [--repeat N] [--quick]
            [--parts fixed,adaptive,cutting] [--cases plane,axisym] [--nu 0.1] [--large]
            [--meshes H:HC,...] [--targets 0.01,0.005,...] [--reference CASE:NU=F[:PM] ...]
-           [--workdir DIR] [--timeout S] [--json FILE]
+           [--workdir DIR] [--timeout S] [--json FILE] [--set P=V ...]
 
   --repeat N   runs per row; the seconds are medians, the counts the first run's (a note is
                printed when the repeats differ in the ram force)
@@ -32,6 +32,8 @@ usage: scripts/python bench/accuracy_per_second.py [--flowform build/flowform] [
                0 and 0.3 have references too)
   --reference  replace or add a reference ram force, e.g. plane:0.1=3.73325:0.00046 (the value
                after the second colon is its uncertainty)
+  --set P=V    a case parameter added to every run (repeatable), e.g. 'Error Estimation/Nested
+               Start=false' for the loop with its levels solved after each cycle's run
 
 The references (F_inf, ±) are docs/BENCHMARKS.md §10 (bench/extrusion_references.py: a least-
 squares fit of two mesh families, ± its largest residual, the contact pattern's mesh-to-mesh
@@ -100,7 +102,8 @@ class Bench:
         runs = []
         for k in range(self.args.repeat):
             out = os.path.join(self.args.workdir, f"{name}_r{k}")
-            r = launcher.run(self.args.flowform, repo_path(case_file), out, NO_FILES + sets, quiet=True, clean=True,
+            r = launcher.run(self.args.flowform, repo_path(case_file), out, NO_FILES + sets + self.args.set, quiet=True,
+                             clean=True,
                              log=os.path.join(self.args.workdir, f"{name}_r{k}.log"), timeout=self.args.timeout)
             runs.append(r)
             s = r.summary or {}
@@ -309,6 +312,8 @@ def main():
     ap.add_argument("--workdir", default="/tmp/flowform_accuracy_per_second")
     ap.add_argument("--timeout", type=float, default=3600)
     ap.add_argument("--json", help="every row as JSON (default WORKDIR/accuracy_per_second.json)")
+    ap.add_argument("--set", action="append", default=[], metavar="P=V",
+                    help="a case parameter for every run (e.g. 'Error Estimation/Nested Start=false')")
     a = ap.parse_args()
 
     a.flowform = launcher.require_executable(a.flowform, "accuracy_per_second.py")

@@ -155,7 +155,8 @@ StageReport NonlinearSolver::newton(Vector& x, const FlowPhysics& physics, const
   auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
   tests->addStatusTest(budget);
   tests->addStatusTest(finite);
-  tests->addStatusTest(Teuchos::rcp(new DivergenceTest));
+  tests->addStatusTest(Teuchos::rcp(new DivergenceTest(options.divergenceGrowth > 0.0 ? options.divergenceGrowth
+                                                                                    : DivergenceTest::kGrowth)));
   tests->addStatusTest(residualTest);
   tests->addStatusTest(maxIters);
 
@@ -314,6 +315,7 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
     newtonOptions.continuing = true;
     newtonOptions.referenceResidual = chord.initialResidualNorm;
   }
+  if (newtonOptions.divergenceGrowth <= 0.0) newtonOptions.divergenceGrowth = kResolveDivergence;
   StageReport sr = newton(x, target, newtonOptions);
   SolveReport report;
   report.reusedFactorSteps = reused;

@@ -29,9 +29,10 @@
 // count. The levels cost what they cost after the run (a quarter and a sixteenth of the dofs);
 // the coarsest does the work a run from scratch did, on a sixteenth of the dofs.
 //
-// With free surfaces each coarser level converges its own surfaces from the run's shape
-// (Problem::startFrom carries it; a few updates) and the responses, frozen-shape and total
-// derivatives compare level to level as on a fixed domain (the die swell: effectivity 0.93–1.05,
+// With free surfaces each level converges its own surfaces (nested: the coarsest from the mesh as
+// made, each finer one from the shape below; after the run: each from the run's shape, a few
+// updates; Problem::startFrom carries it) and the responses, frozen-shape and total
+// derivatives compare level to level as on a fixed domain (the die swell: effectivity 0.90–1.05,
 // docs/verification.md §11). Falls back to the Newton Step estimate on a mesh that is not refined
 // (Uniform Refinements 0: the adaptive loop's first cycle), and to the two-level one where a case
 // with free surfaces asks for indicators (the coarser level's surface is off the run's, where the

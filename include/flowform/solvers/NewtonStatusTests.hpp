@@ -125,20 +125,22 @@ class BudgetTest : public NOX::StatusTest::Generic {
 class DivergenceTest : public NOX::StatusTest::Generic {
  public:
   static constexpr double kGrowth = 1e10;
+  explicit DivergenceTest(double growth = kGrowth) : m_growth(growth) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
     const double normF = solver.getSolutionGroup().getNormF();
     if (solver.getNumIterations() == 0) m_start = normF;
-    m_status = m_start > 0.0 && normF > kGrowth * m_start ? NOX::StatusTest::Failed : NOX::StatusTest::Unconverged;
+    m_status = m_start > 0.0 && normF > m_growth * m_start ? NOX::StatusTest::Failed : NOX::StatusTest::Unconverged;
     if (m_status == NOX::StatusTest::Failed)
-      log() << "  Newton diverged: |F| = " << normF << " > " << kGrowth << " x its start " << m_start << "\n";
+      log() << "  Newton diverged: |F| = " << normF << " > " << m_growth << " x its start " << m_start << "\n";
     return m_status;
   }
   NOX::StatusTest::StatusType getStatus() const override { return m_status; }
   std::ostream& print(std::ostream& os, int indent) const override {
-    return os << std::string(indent, ' ') << "divergence (||F|| > " << kGrowth << " ||F_0||)\n";
+    return os << std::string(indent, ' ') << "divergence (||F|| > " << m_growth << " ||F_0||)\n";
   }
 
  private:
+  double m_growth;
   double m_start = 0.0;
   NOX::StatusTest::StatusType m_status = NOX::StatusTest::Unevaluated;
 };

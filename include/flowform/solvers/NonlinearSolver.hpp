@@ -62,6 +62,9 @@ struct NewtonOptions {
   /// the penalty scales of the start, with a new linearization (the duals restart). No Jacobian
   /// assembly or factorization when it converges (docs/theory.md §8).
   bool reuseFactors = false;
+  /// > 0: Newton fails once ||F|| exceeds this many times its start (DivergenceTest; 0: its
+  /// default, a blow-up only).
+  double divergenceGrowth = 0.0;
 };
 
 struct SolveReport {
@@ -126,6 +129,12 @@ class NonlinearSolver {
   /// below the last step (a geometric series of ratio ≤ 1/2), as for the update test of Newton.
   static constexpr double kReuseContraction = 0.5;
   static constexpr int kMaxReusedSteps = 25;
+  /// A re-solve's Newton starts next to its answer (a converged state before a small change, or
+  /// another mesh's): once ||F|| exceeds this many times its start it has left that
+  /// neighbourhood (a failed line search takes NOX's full recovery step), and the residual
+  /// homotopy from the start follows at once instead of after Max Newton Iterations (the cutting
+  /// scene's re-solves: 75 at the fourth step from 0.76, then 36 more iterations up to 5·10⁵).
+  static constexpr double kResolveDivergence = 10.0;
   /// The re-solve's second try from its start x0 (before the predictor): the homotopy
   /// G(x, t) = F(x) − (1 − t) F(x0) = 0 followed from t = 0 (solved by x0) to t = 1 (F = 0),
   /// Newton at each t from the last one's solution, the penalty scales and the physics of x0
