@@ -55,7 +55,7 @@ def derivative(s, name):
 def run_one(flowform, case, workdir, nu, h, extra, reuse=False):
     out = os.path.join(workdir, sweep.label(nu))
     previous = summary.load(out) if reuse else None
-    sets = [f"Boundary Conditions/rake/Friction Coefficient={nu}", f"Mesh/Geo Parameters/h={h}",
+    sets = [f"Boundary Conditions/rake/Friction Coefficient={nu}", f"Mesh/Geo Parameters/h={h}", "Mesh/Uniform Refinements=0",
             "Sensitivity/Parameters={Friction Coefficient}", "Sensitivity/Finite Difference Check=true",
             "Sensitivity/Finite Difference Step=2e-4", "Error Estimation/Method=None"] + list(extra)
     if previous and previous.get("exit_status") == 0:

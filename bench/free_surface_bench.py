@@ -36,7 +36,7 @@ def scenes(quick, cutting):
               ["Adaptivity/Enabled=false", f"Mesh/Geo Parameters/hc={hc}"], "ram_force")
              for hc in ("0.025", "0.0125", "0.00625")]
     if cutting:
-        base = ["Error Estimation/Method=None", "Free Surface/Maximum Iterations=300"]
+        base = ["Error Estimation/Method=None", "Free Surface/Maximum Iterations=300", "Mesh/Uniform Refinements=0"]
         rows += [("cutting straight chip", "xml/cutting.xml", f"h={h}", base + [f"Mesh/Geo Parameters/h={h}"],
                   "chip_ratio") for h in ("0.1",) + (() if quick else ("0.05",))]
         rows += [("cutting free chip", "xml/cutting.xml", "h=0.1",

@@ -109,6 +109,7 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
   }
   Problem& coarse = coarser.front()->problem();
   estimate.refinedDofs = static_cast<GO>(coarse.dofMap().numGlobalDofs());
+  if (!coarse.freeSurfaces().empty()) estimate.refinedSurfaceUpdates = coarse.freeSurfaceReport().iterations;
   // One coarser level: η = (φ_h − φ_2h) / (2^p − 1) = −(φ_2h − φ_h) / (2^p − 1). Two: with
   // D1 = φ_2h − φ_h, D2 = φ_4h − φ_2h and the error A h^p + B h^q, a = A h^p (2^p − 1) and
   // b = B h^q (2^q − 1) solve D1 = a + b, D2 = 2^p a + 2^q b, and η = −a/(2^p − 1) − b/(2^q − 1)

@@ -22,7 +22,8 @@ void ErrorEstimate::report(nlohmann::json& summary) const {
     summary["sensitivities_total_shape_error_estimate"] = sensitivitiesTotalShape;
     summary["error_estimation"][otherLevel + "_sensitivities_total_shape"] = refinedSensitivitiesTotalShape;
   }
-  if (refinedSurfaceUpdates >= 0) summary["error_estimation"]["refined_free_surface_iterations"] = refinedSurfaceUpdates;
+  if (refinedSurfaceUpdates >= 0)
+    summary["error_estimation"][otherLevel + "_free_surface_iterations"] = refinedSurfaceUpdates;
 }
 
 }  // namespace flowform

@@ -39,7 +39,9 @@ struct ErrorEstimate {
   std::map<std::string, double> refinedFunctionals;
   std::map<std::string, std::map<std::string, double>> refinedSensitivities;
   std::map<std::string, std::map<std::string, double>> refinedSensitivitiesTotalShape;
-  /// Free-surface updates the refined solve took from the carried shape (−1: no free surfaces).
+  /// Free-surface updates the other level's solve took (the refined one from the carried shape;
+  /// the coarser one from the run's shape, or, nested, from the mesh as made); −1: no free
+  /// surfaces. summary.json: error_estimation.<otherLevel>_free_surface_iterations.
   int refinedSurfaceUpdates = -1;
   /// Per node of the coarse mesh and per indicator response: |share of η| (replicated).
   std::map<std::string, std::vector<double>> indicators;
