@@ -168,8 +168,8 @@ static void buildValidCaseParameters(const ValidList& valid) {
                  intInRange(1, 2));
   estimation.set("Nested Start", true,
                  "Method = Coarser Mesh: the coarser levels are solved first, coarsest to finest, each from the one "
-                 "below, and the run starts from the finest of them (nested iteration: a few Newton steps on the run's "
-                 "mesh); the estimate reads those levels. false: the run first, then each level from the next finer one");
+                 "below, and the run starts from the finest of them (nested iteration: the run's Newton starts next to "
+                 "its answer, a free surface from the coarser level's shape); the estimate reads those levels. false: the run first, then each level from the next finer one");
   estimation.set("Second Order", 2.0,
                  "Method = Coarser Mesh with 2 Coarser Levels: the order of the error's second term (the smooth bulk: "
                  "2), larger than Order",

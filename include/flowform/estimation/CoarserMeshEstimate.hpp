@@ -25,9 +25,11 @@
 // Nested iteration (Error Estimation/Nested Start, the default): the levels are solved before
 // the run, coarsest first, each from the one below (on nested meshes the coarser solution
 // interpolates exactly), and the run starts from the finest of them: its Newton begins next to its
-// answer, where from the last adaptive cycle's mesh (or from scratch) it would take its full
-// count. The levels cost what they cost after the run (a quarter and a sixteenth of the dofs);
-// the coarsest does the work a run from scratch did, on a sixteenth of the dofs.
+// answer instead of at the last adaptive cycle's state or from scratch. The levels then start
+// further from theirs (7–10 Newton iterations instead of 5–8): on the extrusion the trade is about
+// even (docs/BENCHMARKS.md §17); where a run from scratch is costly — free surfaces converged from
+// the .geo's shape — the coarsest level does that work on a fraction of the dofs (the cutting
+// scene: 28 updates there, 10 on the run's mesh instead of 29 to 41; 3.6× faster, §13).
 //
 // With free surfaces each level converges its own surfaces (nested: the coarsest from the mesh as
 // made, each finer one from the shape below; after the run: each from the run's shape, a few
