@@ -44,10 +44,10 @@ derivatives by the rake angle (7); --part variants (ctest cutting_variants, labe
      balance (1e-8) and mass (0.5 %; measured 1.0046) hold on the coarser mesh.
 2. ν = 0: no friction, so F_t = 0 to 1e-10 F_c, and the same balances. Rigid-plastic cutting admits
    a family of chips (docs/cutting.md §3): starting from t_c = 1 and from 1.4 the converged chip
-   ratios agree within 0.03 (measured 0.5996 and 0.5771: from 1.4 the chip rides the rake up to
+   ratios agree within 0.03 (measured 0.5996 and 0.5780: from 1.4 the chip rides the rake up to
    y = 3.3 instead of separating at 1.4; with Aitken's relaxation 0.5948 and 0.5859; the corner
    over starts 0.7 ... 1.4 moves by 0.06 of 1.7), and both lie below the thin-shear-zone value 1
-   (this scene's chip is thicker than theirs). The start 1.4 needs more updates (measured 60,
+   (this scene's chip is thicker than theirs). The start 1.4 needs more updates (measured 59,
    Aitken 77): its cap is raised to 150. From the start 1.0, the shear plane's mechanics as in 1.
    (measured: the band at 31.27° against φ = 30.95°, p/k 0.586 against tan φ = 0.600).
 2b. Lee-Shaffer's own geometry held (ν = 0; the .geo's start: a chip of thickness t = 1 leaving
