@@ -315,7 +315,9 @@ SolveReport NonlinearSolver::resolve(Vector& x, const FlowPhysics& target, const
     newtonOptions.continuing = true;
     newtonOptions.referenceResidual = chord.initialResidualNorm;
   }
-  if (newtonOptions.divergenceGrowth <= 0.0) newtonOptions.divergenceGrowth = kResolveDivergence;
+  // Only where the residual homotopy follows a failure (restart): a caller with its own fallback
+  // (the complementarity walls' entry, whose Newton climbs past 10x and comes back) keeps Newton's.
+  if (newtonOptions.divergenceGrowth <= 0.0 && options.restart) newtonOptions.divergenceGrowth = kResolveDivergence;
   StageReport sr = newton(x, target, newtonOptions);
   SolveReport report;
   report.reusedFactorSteps = reused;

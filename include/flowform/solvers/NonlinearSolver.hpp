@@ -134,6 +134,8 @@ class NonlinearSolver {
   /// neighbourhood (a failed line search takes NOX's full recovery step), and the residual
   /// homotopy from the start follows at once instead of after Max Newton Iterations (the cutting
   /// scene's re-solves: 75 at the fourth step from 0.76, then 36 more iterations up to 5·10⁵).
+  /// Not with NewtonOptions::restart false (no homotopy follows; the complementarity walls'
+  /// entry climbs past 10× and converges: the axisymmetric hot extrusion at k = 10⁹).
   static constexpr double kResolveDivergence = 10.0;
   /// The re-solve's second try from its start x0 (before the predictor): the homotopy
   /// G(x, t) = F(x) − (1 − t) F(x0) = 0 followed from t = 0 (solved by x0) to t = 1 (F = 0),
