@@ -67,9 +67,8 @@ Simulation::~Simulation() = default;
 void Simulation::solveCoarserLevelsFirst() {
   const ParameterList& estimation = parameters().sublist("Error Estimation");
   const std::string method = estimation.get<std::string>("Method");
-  // The adaptive loop estimates with the registry's first method when the case says None.
   const bool adaptive = adaptivityRequested(parameters());
-  const std::string used = method == "None" && adaptive ? estimationMethods().front().name : method;
+  const std::string used = adaptive ? adaptiveEstimationMethod(method) : method;
   if (used != CoarserMeshEstimate::kName || !estimation.get<bool>("Nested Start")) return;
   // The adaptive loop's indicators are wanted on every cycle but the last (free surfaces then
   // fall back to the two-level estimate: no levels to solve first).

@@ -148,7 +148,7 @@ int runAdaptive(const Teuchos::ParameterList& caseParams, const CaseRunFactory& 
   // level is the field's mesh itself. Not with free surfaces (that estimate falls back to the
   // two-level one there).
   const std::string method = caseParams.sublist("Error Estimation").get<std::string>("Method");
-  const bool nested = (method == "None" ? estimationMethods().front().name : method) == CoarserMeshEstimate::kName;
+  const bool nested = adaptiveEstimationMethod(method) == CoarserMeshEstimate::kName;
   int levelsAllowed = 0;  // Coarser Levels, when the loop nests its meshes
   double firstDofs = 0.0;
   std::unique_ptr<CaseRun> sim, previous;

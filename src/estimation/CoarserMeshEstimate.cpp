@@ -81,12 +81,6 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
   if (static_cast<int>(run.coarserLevels().size()) == levels) {
     coarser = std::move(run.coarserLevels());
     estimate.details["nested_start"] = 1.0;
-    for (int level = 1; level <= levels; ++level) {
-      const Problem& problem = coarser[level - 1]->problem();
-      const std::string name = "level_" + std::to_string(level);
-      estimate.details[name + "_dofs"] = static_cast<double>(problem.dofMap().numGlobalDofs());
-      estimate.details[name + "_newton_iterations"] = problem.report().newtonIterations;
-    }
   }
   run.coarserLevels().clear();
   for (int level = static_cast<int>(coarser.size()) + 1; level <= levels; ++level) {
@@ -104,6 +98,10 @@ ErrorEstimate CoarserMeshEstimate::estimate(CaseRun& run, const CaseRunFactory& 
       estimate.seconds = secondsSince(start);
       return estimate;
     }
+  }
+  for (int level = 1; level <= levels; ++level) {
+    const Problem& problem = coarser[level - 1]->problem();
+    const std::string name = "level_" + std::to_string(level);
     estimate.details[name + "_dofs"] = static_cast<double>(problem.dofMap().numGlobalDofs());
     estimate.details[name + "_newton_iterations"] = problem.report().newtonIterations;
   }

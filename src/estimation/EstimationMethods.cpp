@@ -20,6 +20,10 @@ const std::vector<EstimationMethodInfo>& estimationMethods() {
 
 int estimationMethodIndex(const std::string& name) { return indexByName(estimationMethods(), name); }
 
+std::string adaptiveEstimationMethod(const std::string& method) {
+  return method == "None" ? estimationMethods().front().name : method;
+}
+
 ErrorEstimate estimateErrors(int method, CaseRun& coarse, const CaseRunFactory& makeRun,
                              const std::vector<std::string>& indicatorResponses, const IndicatorsWanted& wanted) {
   ErrorEstimate estimate;

@@ -25,6 +25,9 @@ struct EstimationMethodInfo {
 const std::vector<EstimationMethodInfo>& estimationMethods();
 /// Index of the method called `name`, −1 when there is none.
 int estimationMethodIndex(const std::string& name);
+/// The method the adaptive loop estimates with for a case's Error Estimation/Method `method`: that
+/// one, the registry's first when None.
+std::string adaptiveEstimationMethod(const std::string& method);
 
 /// The estimate of `coarse`'s responses by method `method` (an index of estimationMethods()); a
 /// method may refactor `coarse`'s model (CoarserMeshEstimate), its solution stays.
